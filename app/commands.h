@@ -1,0 +1,18 @@
+// Subcommands of the skylit executable. Each add_*_command registers its
+// options on the root app and, when selected, stores its action in `run`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace skylit::app {
+
+using Action = std::function<int()>;
+
+void add_shade_command(CLI::App& root, Action& run);
+
+// Runs the CLI: parses, dispatches, turns exceptions into one-line errors.
+int run_cli(int argc, char** argv);
+
+}  // namespace skylit::app

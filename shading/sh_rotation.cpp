@@ -1,5 +1,10 @@
 #include "shading/sh_rotation.h"
 
+#include "shading/quadrature.h"
+
+#include <glm/matrix.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,6 +46,76 @@ Vec rotate_zh(std::span<const double> zh, const glm::dvec3& axis) {
   Vec out(num_coeffs(static_cast<int>(zh.size())), 0.0);
   add_rotated_zh(zh, axis, 1.0, out);
   return out;
+}
+
+namespace {
+
+// Product rules exact for the degree-2(n−1) integrands of band n−1, one per order.
+const quad::SphereRule& rotation_rule(int order) {
+  static const std::array<quad::SphereRule, kMaxOrder + 1> rules = [] {
+    std::array<quad::SphereRule, kMaxOrder + 1> r;
+    for (int n = 1; n <= kMaxOrder; ++n) r[n] = quad::sphere_product_rule(n, 2 * n - 1);
+    return r;
+  }();
+  return rules[order];
+}
+
+}  // namespace
+
+ShRotation::ShRotation(int order, const glm::dmat3& rotation) : order_(order) {
+  if (order < kMinOrder || order > kMaxOrder) throw std::invalid_argument("ShRotation: order out of range");
+  const glm::dmat3 rt = glm::transpose(rotation);
+  const glm::dmat3 gram = rt * rotation;
+  double dev = std::abs(glm::determinant(rotation) - 1.0);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) dev = std::max(dev, std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)));
+  if (dev > 1e-6) throw std::invalid_argument("ShRotation: matrix is not a proper rotation");
+
+  const auto& rule = rotation_rule(order);
+  const int nc = num_coeffs(order);
+  std::array<double, kMaxOrder * kMaxOrder> y{}, y_rot{};
+  for (std::size_t q = 0; q < rule.dirs.size(); ++q) {
+    eval_basis(order, rule.dirs[q], std::span<double>(y.data(), nc));
+    eval_basis(order, rt * rule.dirs[q], std::span<double>(y_rot.data(), nc));
+    for (int l = 0; l < order; ++l) {
+      double* block = &blocks_[rotation_band_offset(l)];
+      const int w = 2 * l + 1, base = index(l, -l);
+      for (int r = 0; r < w; ++r)
+        for (int c = 0; c < w; ++c) block[r * w + c] += rule.weights[q] * y[base + r] * y_rot[base + c];
+    }
+  }
+}
+
+std::span<const double> ShRotation::band(int l) const {
+  if (l < 0 || l >= order_) throw std::out_of_range("ShRotation::band: band out of range");
+  const auto size = static_cast<std::size_t>((2 * l + 1) * (2 * l + 1));
+  return std::span<const double>(&blocks_[rotation_band_offset(l)], size);
+}
+
+void ShRotation::apply(std::span<const double> in, std::span<double> out) const {
+  const std::size_t nc = static_cast<std::size_t>(num_coeffs(order_));
+  if (in.size() != nc || out.size() != nc) throw std::invalid_argument("ShRotation::apply: size mismatch");
+  std::array<double, 2 * kMaxOrder - 1> band_in{};  // copy so that in and out may alias
+  for (int l = 0; l < order_; ++l) {
+    const int w = 2 * l + 1, base = index(l, -l);
+    std::copy_n(in.begin() + base, w, band_in.begin());
+    const double* block = &blocks_[rotation_band_offset(l)];
+    for (int r = 0; r < w; ++r) {
+      double acc = 0.0;
+      for (int c = 0; c < w; ++c) acc += block[r * w + c] * band_in[c];
+      out[base + r] = acc;
+    }
+  }
+}
+
+Vec ShRotation::apply(std::span<const double> in) const {
+  Vec out(in.size());
+  apply(in, out);
+  return out;
+}
+
+Vec rotate(std::span<const double> coeffs, const glm::dmat3& rotation) {
+  return ShRotation(order_of(coeffs.size()), rotation).apply(coeffs);
 }
 
 }  // namespace skylit::sh

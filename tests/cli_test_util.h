@@ -1,0 +1,35 @@
+// Runs the built skylit binary through the shell for end-to-end CLI tests.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace skylit::testing {
+
+struct Run {
+  int status;       // exit code, −1 if the process did not exit normally
+  std::string out;  // stdout (and stderr when merged)
+};
+
+inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
+  const std::string cmd = std::string(SKYLIT_BINARY) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return {-1, ""};
+  std::string out;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+inline int count_lines(const std::string& s) {
+  int lines = 0;
+  for (char c : s) lines += c == '\n';
+  return lines;
+}
+
+}  // namespace skylit::testing

@@ -4,6 +4,11 @@
 // Grid convention (GDAL's): column i grows east, row j grows south; row 0 is the
 // northern edge. Texel (i, j) has its centre at map position
 // (i·dx, −j·dy) in a local metric frame with x east, y north.
+//
+// Staleness: every change to `heights` must go through mark_dirty() (the editing
+// functions in terrain/editing.h do), which bumps `revision` and records the
+// changed rectangle. Derived data (the pyramid) remembers the revision it was built
+// from, so it can tell when it is stale instead of silently serving old heights.
 #pragma once
 
 #include <array>
@@ -19,7 +24,20 @@ struct GeoReference {
   std::array<double, 6> geotransform{0, 1, 0, 0, 0, -1};  // GDAL order
   std::string crs_wkt;                                     // empty: unknown CRS
   bool geographic = false;                                 // CRS in degrees
+  bool has_geotransform = true;  // false: the source had none (outputs write none)
 };
+
+// Half-open pixel rectangle [x0, x0+width) × [y0, y0+height); empty when a side is ≤ 0.
+struct PixelRect {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  bool empty() const { return width <= 0 || height <= 0; }
+  int x1() const { return x0 + width; }   // one past the last column
+  int y1() const { return y0 + height; }  // one past the last row
+  bool operator==(const PixelRect&) const = default;
+};
+
+// Smallest rectangle holding both (an empty one is ignored).
+PixelRect bounding_union(const PixelRect& a, const PixelRect& b);
 
 struct HeightField {
   int width = 0;
@@ -31,6 +49,11 @@ struct HeightField {
   std::optional<double> nodata;      // nodata value to write in outputs, if any
   GeoReference georef;
 
+  // Change tracking: revision grows by one per mark_dirty(); last_dirty is the
+  // rectangle of the most recent change (whole grid after construction/reads).
+  std::uint64_t revision = 0;
+  PixelRect last_dirty;
+
   HeightField() = default;
   HeightField(int w, int h, double spacing);  // flat, all valid, square spacing
 
@@ -41,6 +64,11 @@ struct HeightField {
   double dx(int j) const { return dx_per_row[j]; }
   double mean_dx() const;
   bool any_nodata() const;
+  PixelRect bounds() const { return {0, 0, width, height}; }
+
+  // Record that the heights inside `rect` (clipped to the grid) changed.
+  void mark_dirty(const PixelRect& rect);
+  void mark_all_dirty() { mark_dirty(bounds()); }
 };
 
 }  // namespace skylit::terrain

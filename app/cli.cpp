@@ -1,5 +1,7 @@
 #include "app/commands.h"
+#include "app/gdal_style_args.h"
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 
@@ -11,10 +13,17 @@ int run_cli(int argc, char** argv) {
   root.require_subcommand(1);
   Action run;
   add_shade_command(root, run);
+  add_sun_command(root, run);
   try {
-    root.parse(argc, argv);
+    // CLI11 wants argv in reverse order when given as a vector.
+    std::vector<std::string> args = normalise_gdal_style_args(argc, argv);
+    args.erase(args.begin());
+    std::reverse(args.begin(), args.end());
+    root.parse(args);
   } catch (const CLI::ParseError& e) {
-    return root.exit(e);
+    if (e.get_exit_code() == 0) return root.exit(e);  // --help, --version
+    std::cerr << "skylit: error: " << e.what() << " (see --help)\n";
+    return 2;
   }
   try {
     return run ? run() : 0;

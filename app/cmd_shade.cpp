@@ -1,13 +1,135 @@
+// `skylit shade INPUT... -o OUTPUT`: the DEM hillshade/export tool. Reads DEMs
+// (or the built-in synthetic scene), computes one product with the CPU reference
+// pipeline, and writes it georeferenced — atomically, so a failed run leaves no file.
 #include "app/commands.h"
+#include "app/progress.h"
+#include "app/shade_output.h"
 
+#include "shading/products.h"
+#include "terrain/dem_reader.h"
+#include "terrain/synthetic.h"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace skylit::app {
+namespace {
 
-// TEMPORARY skeleton: replaced by the shade tool (issue 3).
+struct ShadeArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  bool synthetic = false;
+  std::uint64_t seed = 1;
+  int size = 512;
+  std::string product = "shaded";
+  std::string format;
+  std::vector<std::string> creation_options;
+  double z_factor = 1.0;
+  std::optional<double> scale, xscale, yscale;
+  int azimuths = 32;
+  bool exact = false;
+  bool no_curvature = false;
+  double max_distance = 0.0;
+  int k_v = 4;
+  double level_offset = 2.0;
+  int sh_order = 4;
+  int nlp_order = 8;
+  double exposure = 1.0;
+  std::string backend = "reference";
+  unsigned threads = 0;
+  bool quiet = false;
+  bool overwrite = false;
+  bool compute_edges = true;
+};
+
+terrain::HeightField load_input(const ShadeArgs& a) {
+  if (a.synthetic) {
+    if (!a.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
+    terrain::SyntheticOptions opt;
+    opt.width = opt.height = a.size;
+    opt.seed = a.seed;
+    return terrain::make_synthetic_terrain(opt);
+  }
+  if (a.inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
+  terrain::DemReadOptions opt;
+  opt.scale = a.scale;
+  opt.xscale = a.xscale;
+  opt.yscale = a.yscale;
+  opt.z_factor = a.z_factor;
+  auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), opt) : terrain::read_dem(a.inputs, opt);
+  if (!a.quiet)
+    for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
+  return std::move(result.field);
+}
+
+int run_shade(const ShadeArgs& a) {
+  const auto product = shading::parse_product(a.product);
+  if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (horizon, svf, skyview, shaded)");
+  if (a.backend != "reference")
+    throw std::invalid_argument("--backend '" + a.backend + "' is not available; this build has: reference");
+  OutputSpec out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
+
+  const terrain::HeightField field = load_input(a);
+
+  shading::ProductOptions opt;
+  opt.march.azimuths = a.azimuths;
+  opt.march.k_v = a.k_v;
+  opt.march.level_offset = a.level_offset;
+  opt.march.max_distance_m = a.max_distance;
+  opt.march.curvature.enabled = !a.no_curvature;
+  opt.exact = a.exact;
+  opt.shaded.sh_order = a.sh_order;
+  opt.shaded.nlp_order = a.nlp_order;
+  opt.shaded.exposure = a.exposure;
+  opt.threads = a.threads;
+
+  ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
+  const auto bands = shading::compute_product(field, *product, opt, [&](double f) { bar.update(f); });
+  bar.finish();
+  write_product(out, field, bands);
+  if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
+                          << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";
+  return 0;
+}
+
+}  // namespace
+
 void add_shade_command(CLI::App& root, Action& run) {
-  auto* cmd = root.add_subcommand("shade", "Shade a DEM: horizon, svf, skyview, shaded products");
-  cmd->callback([&run] { run = [] { throw std::runtime_error("shade: not built yet"); return 1; }; });
+  auto args = std::make_shared<ShadeArgs>();
+  auto* cmd = root.add_subcommand("shade", "Shade a DEM: horizon, svf, skyview or shaded relief, georeferenced");
+  cmd->add_option("INPUT", args->inputs, "DEM raster(s) or a directory of tiles (mosaicked)");
+  cmd->add_option("-o,--output", args->output, "Output raster (.tif, .png)")->required();
+  cmd->add_flag("--synthetic", args->synthetic, "Use the built-in synthetic mountain scene instead of INPUT");
+  cmd->add_option("--seed", args->seed, "Seed of the synthetic scene")->capture_default_str();
+  cmd->add_option("--size", args->size, "Width and height of the synthetic scene (pixels)")
+      ->check(CLI::Range(2, 16384))->capture_default_str();
+  cmd->add_option("-p,--product", args->product, "horizon | svf | skyview | shaded")->capture_default_str();
+  cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
+  cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
+  cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(CLI::PositiveNumber);
+  cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
+  cmd->add_option("--azimuths", args->azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
+  cmd->add_flag("--exact", args->exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
+  cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
+  cmd->add_option("--max-distance", args->max_distance, "Maximum marching distance in metres (0: the DEM extent)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--kv", args->k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option("--level-offset", args->level_offset, "Pyramid level offset o_v")->capture_default_str();
+  cmd->add_option("--sh-order", args->sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
+  cmd->add_option("--nlp-order", args->nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
+  cmd->add_option("--exposure", args->exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--backend", args->backend, "Compute backend: reference (CPU, double precision)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
+  cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
+  cmd->callback([&run, args] { run = [args] { return run_shade(*args); }; });
 }
 
 }  // namespace skylit::app

@@ -1,5 +1,7 @@
 #include "shading/sky_sh.h"
 
+#include "shading/brdf.h"
+
 #include "shading/sh_rotation.h"
 
 #include <algorithm>
@@ -75,19 +77,8 @@ Rgb reconstruct(const RgbSh& s, const glm::dvec3& dir) {
   return {sh::dot(s.c[0], y), sh::dot(s.c[1], y), sh::dot(s.c[2], y)};
 }
 
-std::vector<double> clamped_cosine_zh(int order) {
-  // z_l = 2π K_l0 ∫_0^1 x P_l(x) dx; the integrand is a polynomial of degree l+1.
-  const quad::Rule1D g = quad::gauss_legendre(order / 2 + 2, 0.0, 1.0);
-  std::vector<double> z(order, 0.0);
-  for (int l = 0; l < order; ++l) {
-    for (std::size_t k = 0; k < g.nodes.size(); ++k) z[l] += g.weights[k] * g.nodes[k] * sh::legendre(l, g.nodes[k]);
-    z[l] *= 2.0 * sh::kPi * sh::sh_norm(l, 0);
-  }
-  return z;
-}
-
 Rgb irradiance(const RgbSh& s, const glm::dvec3& normal) {
-  const sh::Vec k = sh::rotate_zh(clamped_cosine_zh(s.order()), normal);
+  const sh::Vec k = sh::rotate_zh(shading::clamped_cosine_zh(s.order()), normal);
   return {sh::dot(s.c[0], k), sh::dot(s.c[1], k), sh::dot(s.c[2], k)};
 }
 

@@ -60,11 +60,9 @@ void apply_window(RgbSh& s, Window w);
 
 Rgb reconstruct(const RgbSh& s, const glm::dvec3& dir);
 
-// ZH coefficients z_l = ∫ max(cos θ, 0) y_l0 dω of the clamped cosine (l < order):
-// √π/2, √(π/3), √(5π)/8, 0, −√π/16, 0, √(13π)/128 (exact GL on [0, 1]).
-std::vector<double> clamped_cosine_zh(int order);
 // Irradiance ∫ L max(n·ω, 0) dω on a surface with unit normal n, from the SH
-// (exact for the order-n band-limited sky: the clamped cosine's ZH rotated to n).
+// (exact for the order-n band-limited sky: the clamped cosine's ZH, shading/brdf.h,
+// rotated to n).
 Rgb irradiance(const RgbSh& s, const glm::dvec3& normal);
 // Horizontal irradiance of a sky that is 0 below the horizon: there cos θ need not
 // be clamped, and cos θ = √(4π/3)·y_10, so E = √(4π/3)·L_10 exactly (order ≥ 2).

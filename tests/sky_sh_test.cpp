@@ -6,6 +6,7 @@
 #include "shading/sky_cie.h"
 #include "shading/sky_model.h"
 #include "shading/sky_preetham.h"
+#include "shading/brdf.h"
 #include "shading/sky_sh.h"
 
 #include <glm/geometric.hpp>
@@ -78,7 +79,7 @@ TEST(SkySh, UniformSkyClosedForm) {
 }
 
 TEST(SkySh, ClampedCosineZhClosedForms) {
-  const auto z = clamped_cosine_zh(8);
+  const auto z = shading::clamped_cosine_zh(8);  // shading/brdf.h
   const double sp = std::sqrt(kPi);
   const double expected[8] = {sp / 2, std::sqrt(kPi / 3), std::sqrt(5 * kPi) / 8, 0, -sp / 16, 0, std::sqrt(13 * kPi) / 128, 0};
   for (int l = 0; l < 8; ++l) EXPECT_NEAR(z[l], expected[l], 1e-14) << l;

@@ -1,0 +1,216 @@
+// `skylit shade` end to end: every product on small rasters with georeferencing
+// kept, and every kind of bad input rejected with one clear line, a non-zero
+// exit and no output file left behind.
+#include "cli_test_util.h"
+#include "terrain_test_util.h"
+
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+using skylit::testing::count_lines;
+using skylit::testing::run_skylit;
+using namespace skylit::terrain::testing;
+
+namespace {
+
+// A 24×20 projected DEM: a Gaussian hill on a plane, 30 m pixels, UTM 11N.
+std::string make_hill(const ScratchDir& dir, const std::string& name = "hill.tif") {
+  RasterSpec s;
+  s.width = 24;
+  s.height = 20;
+  s.values.resize(24 * 20);
+  for (int j = 0; j < 20; ++j)
+    for (int i = 0; i < 24; ++i)
+      s.values[j * 24 + i] = 500 + 300 * std::exp(-((i - 12) * (i - 12) + (j - 10) * (j - 10)) / 20.0);
+  return make_raster(dir.file(name), s);
+}
+
+struct Opened {
+  int w = 0, h = 0, bands = 0;
+  GDALDataType type = GDT_Unknown;
+  std::array<double, 6> gt{};
+  std::string wkt;
+  int has_nodata = 0;
+  double nodata = 0;
+};
+
+Opened open_output(const std::string& path) {
+  ensure_gdal();
+  Opened o;
+  GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+  if (!ds) return o;
+  o.w = ds->GetRasterXSize();
+  o.h = ds->GetRasterYSize();
+  o.bands = ds->GetRasterCount();
+  o.type = ds->GetRasterBand(1)->GetRasterDataType();
+  ds->GetGeoTransform(o.gt.data());
+  if (ds->GetSpatialRef()) o.wkt = ds->GetSpatialRef()->GetName();
+  o.nodata = ds->GetRasterBand(1)->GetNoDataValue(&o.has_nodata);
+  GDALClose(GDALDataset::ToHandle(ds));
+  return o;
+}
+
+// Expects a failure: exit 1, exactly one line starting "skylit: error:", no output.
+void expect_clean_failure(const ScratchDir& dir, const std::string& args, const std::string& needle) {
+  const auto before = dir.listing();
+  const auto r = run_skylit("shade " + args + " -q", true);
+  EXPECT_EQ(r.status, 1) << args << "\n" << r.out;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
+  EXPECT_EQ(dir.listing(), before) << "a failed run left files behind";
+}
+
+}  // namespace
+
+TEST(CliShade, EveryProductKeepsGeoreferencing) {
+  ScratchDir dir;
+  const std::string in = make_hill(dir);
+  for (const std::string product : {"svf", "skyview", "horizon", "shaded"}) {
+    const std::string out = dir.file(product + (product == "shaded" ? ".png" : ".tif"));
+    const auto r = run_skylit("shade " + in + " -o " + out + " --product " + product + " --azimuths 8 -q", true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const Opened o = open_output(out);
+    EXPECT_EQ(o.w, 24);
+    EXPECT_EQ(o.h, 20);
+    EXPECT_EQ(o.bands, product == "horizon" ? 8 : 1);
+    EXPECT_EQ(o.type, product == "shaded" ? GDT_Byte : GDT_Float32);
+    if (product != "shaded") {
+      EXPECT_DOUBLE_EQ(o.gt[0], 500000);
+      EXPECT_DOUBLE_EQ(o.gt[1], 30);
+      EXPECT_DOUBLE_EQ(o.gt[3], 4000000);
+      EXPECT_NE(o.wkt.find("UTM zone 11N"), std::string::npos) << o.wkt;
+    }
+  }
+}
+
+TEST(CliShade, NodataIsKeptInOutputs) {
+  ScratchDir dir;
+  RasterSpec s;
+  s.width = s.height = 16;
+  s.values = ramp(16, 16, 100, 3, 1);
+  s.values[5 * 16 + 7] = -32768;
+  s.nodata = -32768;
+  const std::string in = make_raster(dir.file("void.tif"), s);
+  const std::string out = dir.file("svf.tif");
+  ASSERT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 8 -q").status, 0);
+  const Opened o = open_output(out);
+  ASSERT_TRUE(o.has_nodata);
+  GDALDataset* ds = GDALDataset::Open(out.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+  float v[16 * 16];
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 16, 16, v, 16, 16, GDT_Float32, 0, 0, nullptr), CE_None);
+  GDALClose(GDALDataset::ToHandle(ds));
+  int nodata = 0;
+  for (int k = 0; k < 256; ++k) {
+    if (v[k] == static_cast<float>(o.nodata)) ++nodata;
+    else EXPECT_TRUE(v[k] > 0.0f && v[k] <= 1.0f) << k << ": " << v[k];
+  }
+  EXPECT_EQ(nodata, 1);
+  EXPECT_EQ(v[5 * 16 + 7], static_cast<float>(o.nodata));
+}
+
+TEST(CliShade, BuiltInSceneWritesPng) {
+  ScratchDir dir;
+  const std::string out = dir.file("default.png");
+  const auto r = run_skylit("shade --synthetic --size 64 --azimuths 8 -o " + out + " -q", true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Opened o = open_output(out);
+  EXPECT_EQ(o.w, 64);
+  EXPECT_EQ(o.type, GDT_Byte);
+}
+
+TEST(CliShade, BadInputFailsCleanly) {
+  ScratchDir dir;
+  const std::string hill = make_hill(dir);
+  const std::string out = " -o " + dir.file("out.tif");
+  expect_clean_failure(dir, dir.file("missing.tif") + out, "missing.tif");
+  {
+    std::ofstream(dir.file("notes.txt")) << "not a raster at all\n";
+    expect_clean_failure(dir, dir.file("notes.txt") + out, "notes.txt");
+  }
+  {
+    std::ofstream f(dir.file("corrupt.tif"), std::ios::binary);
+    f << "II*\0garbage that is not a TIFF directory";
+  }
+  expect_clean_failure(dir, dir.file("corrupt.tif") + out, "corrupt.tif");
+
+  auto raster = [&](const std::string& name, RasterSpec s) { return make_raster(dir.file(name), s); };
+  RasterSpec all_void;
+  all_void.values.assign(16, -9999);
+  all_void.nodata = -9999;
+  expect_clean_failure(dir, raster("void.tif", all_void) + out, "nodata");
+  RasterSpec nan_h;
+  nan_h.values = ramp(4, 4, 10, 1, 1);
+  nan_h.values[5] = std::numeric_limits<double>::infinity();
+  expect_clean_failure(dir, raster("inf.tif", nan_h) + out, "inf.tif");
+  RasterSpec absurd;
+  absurd.values = ramp(4, 4, 10, 1, 1);
+  absurd.values[3] = 25000;
+  expect_clean_failure(dir, raster("absurd.tif", absurd) + out, "absurd.tif");
+  RasterSpec one;
+  one.width = one.height = 1;
+  expect_clean_failure(dir, raster("one.tif", one) + out, "one.tif");
+  RasterSpec strip;
+  strip.width = 9;
+  strip.height = 1;
+  expect_clean_failure(dir, raster("strip.tif", strip) + out, "strip.tif");
+  RasterSpec rotated;
+  rotated.gt = {500000, 30, 5, 4000000, 5, -30};
+  expect_clean_failure(dir, raster("rotated.tif", rotated) + out, "rotated.tif");
+  RasterSpec no_crs;
+  no_crs.epsg.reset();
+  no_crs.set_geotransform = false;
+  const std::string nocrs = raster("nocrs.tif", no_crs);
+  expect_clean_failure(dir, nocrs + out, "-s/--scale");
+
+  // Output problems are found before any work.
+  expect_clean_failure(dir, hill + " -o " + dir.file("no/such/folder/out.tif"), "does not exist");
+  expect_clean_failure(dir, hill + " -o " + dir.file("out.png") + " -p svf", "PNG");
+  expect_clean_failure(dir, hill + " -o " + dir.file("out.xyz"), "format");
+  expect_clean_failure(dir, hill + out + " -p bogus", "bogus");
+  expect_clean_failure(dir, hill + out + " --backend cuda", "cuda");
+  expect_clean_failure(dir, out, "INPUT");
+  expect_clean_failure(dir, hill + " " + hill + " " + dir.file("out.tif") + " --synthetic" + out, "--synthetic");
+}
+
+TEST(CliShade, UnknownCrsWorksOnlyWithAScale) {
+  ScratchDir dir;
+  RasterSpec s;
+  s.width = s.height = 8;
+  s.values = ramp(8, 8, 10, 1, 2);
+  s.epsg.reset();
+  s.set_geotransform = false;
+  const std::string in = make_raster(dir.file("nocrs.tif"), s);
+  const auto r = run_skylit("shade " + in + " -s 10 -o " + dir.file("svf.tif") + " -p svf --azimuths 4", true);
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
+}
+
+TEST(CliShade, RefusesToOverwriteWithoutFlagAndFailsOnReadOnlyFolder) {
+  ScratchDir dir;
+  const std::string in = make_hill(dir);
+  const std::string out = dir.file("svf.tif");
+  ASSERT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 4 -q").status, 0);
+  expect_clean_failure(dir, in + " -o " + out + " -p svf", "--overwrite");
+  EXPECT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 4 -q --overwrite").status, 0);
+  if (::geteuid() != 0) {  // root ignores folder permissions
+    std::filesystem::create_directory(dir.file("ro"));
+    std::filesystem::permissions(dir.file("ro"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    expect_clean_failure(dir, in + " -o " + dir.file("ro/out.tif"), "not writable");
+  }
+  // A folder nobody can create files in, root included.
+  expect_clean_failure(dir, in + " -o /proc/skylit_out.tif -p svf", "/proc/skylit_out.tif");
+}
+
+TEST(CliShade, HelpAndVersion) {
+  const auto help = run_skylit("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("shade"), std::string::npos);
+  const auto v = run_skylit("--version");
+  EXPECT_EQ(v.status, 0);
+  EXPECT_NE(v.out.find("skylit "), std::string::npos);
+}

@@ -1,0 +1,140 @@
+#include "gpu/buffers.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace skylit::gpu {
+namespace {
+
+void check_range(std::size_t offset, std::size_t bytes, std::size_t size, const char* what) {
+  if (offset > size || bytes > size - offset)
+    throw std::out_of_range(std::string(what) + ": bytes [" + std::to_string(offset) + ", " +
+                            std::to_string(offset + bytes) + ") outside a buffer of " +
+                            std::to_string(size));
+}
+
+GLenum internal_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_R32F : GL_RGBA32F; }
+GLenum pixel_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_RED : GL_RGBA; }
+
+}  // namespace
+
+Buffer::Buffer(std::size_t size_bytes, const void* data) : mSize(size_bytes) {
+  glCreateBuffers(1, &mId);
+  // GL forbids zero-sized storage; one byte keeps an "empty" buffer bindable.
+  glNamedBufferStorage(mId, static_cast<GLsizeiptr>(std::max<std::size_t>(size_bytes, 1)),
+                       size_bytes ? data : nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    glDeleteBuffers(1, &mId);
+    throw std::runtime_error("Buffer: allocating " + std::to_string(size_bytes) +
+                             " bytes failed (GL error " + std::to_string(error) + ")");
+  }
+}
+
+Buffer::~Buffer() {
+  if (mId) glDeleteBuffers(1, &mId);
+}
+
+Buffer::Buffer(Buffer&& other) noexcept
+    : mId(std::exchange(other.mId, 0)), mSize(std::exchange(other.mSize, 0)) {}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this != &other) {
+    if (mId) glDeleteBuffers(1, &mId);
+    mId = std::exchange(other.mId, 0);
+    mSize = std::exchange(other.mSize, 0);
+  }
+  return *this;
+}
+
+void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
+  check_range(offset, bytes, mSize, "Buffer::upload");
+  if (bytes)
+    glNamedBufferSubData(mId, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
+  check_range(offset, bytes, mSize, "Buffer::download");
+  if (bytes)
+    glGetNamedBufferSubData(mId, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes),
+                            data);
+}
+
+void Buffer::fill_zero() {
+  glClearNamedBufferData(mId, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+}
+
+void Buffer::bind_storage(unsigned binding) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, mId);
+}
+
+void Buffer::bind_uniform(unsigned binding) const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, binding, mId);
+}
+
+Texture2D::Texture2D(int width, int height, TextureFormat format)
+    : mWidth(width), mHeight(height), mFormat(format) {
+  if (width < 1 || height < 1)
+    throw std::invalid_argument("Texture2D: size must be positive");
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (width > max_size || height > max_size)
+    throw std::runtime_error("Texture2D: " + std::to_string(width) + "×" +
+                             std::to_string(height) + " exceeds GL_MAX_TEXTURE_SIZE " +
+                             std::to_string(max_size) + " (process in tiles)");
+  glCreateTextures(GL_TEXTURE_2D, 1, &mId);
+  glTextureStorage2D(mId, 1, internal_format(format), width, height);
+  glTextureParameteri(mId, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(mId, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(mId, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(mId, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+Texture2D::~Texture2D() {
+  if (mId) glDeleteTextures(1, &mId);
+}
+
+Texture2D::Texture2D(Texture2D&& other) noexcept
+    : mId(std::exchange(other.mId, 0)),
+      mWidth(other.mWidth),
+      mHeight(other.mHeight),
+      mFormat(other.mFormat) {}
+
+Texture2D& Texture2D::operator=(Texture2D&& other) noexcept {
+  if (this != &other) {
+    if (mId) glDeleteTextures(1, &mId);
+    mId = std::exchange(other.mId, 0);
+    mWidth = other.mWidth;
+    mHeight = other.mHeight;
+    mFormat = other.mFormat;
+  }
+  return *this;
+}
+
+void Texture2D::upload(std::span<const float> texels) {
+  if (texels.size() != static_cast<std::size_t>(mWidth) * mHeight * channels())
+    throw std::invalid_argument("Texture2D::upload: wrong number of values");
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(mId, 0, 0, 0, mWidth, mHeight, pixel_format(mFormat), GL_FLOAT,
+                      texels.data());
+}
+
+std::vector<float> Texture2D::download() const {
+  std::vector<float> out(static_cast<std::size_t>(mWidth) * mHeight * channels());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(mId, 0, pixel_format(mFormat), GL_FLOAT,
+                    static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
+  return out;
+}
+
+void Texture2D::bind_sampler(unsigned unit) const { glBindTextureUnit(unit, mId); }
+
+void Texture2D::bind_image(unsigned unit, bool read, bool write) const {
+  const GLenum access = read && write ? GL_READ_WRITE : write ? GL_WRITE_ONLY : GL_READ_ONLY;
+  glBindImageTexture(unit, mId, 0, GL_FALSE, 0, access, internal_format(mFormat));
+}
+
+}  // namespace skylit::gpu

@@ -1,0 +1,81 @@
+// RAII owners of GL buffer and texture objects (DSA, immutable storage). Construct
+// and destroy them while a context is current; they are movable, not copyable.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace skylit::gpu {
+
+// A buffer object usable as SSBO or UBO; contents can be rewritten and read back.
+class Buffer {
+ public:
+  Buffer() = default;  // no GL object
+  explicit Buffer(std::size_t size_bytes, const void* data = nullptr);
+  template <class T>
+  static Buffer from(std::span<const T> values) {
+    return Buffer(values.size_bytes(), values.data());
+  }
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  std::uint32_t id() const { return mId; }
+  std::size_t size_bytes() const { return mSize; }
+
+  // Byte ranges must lie inside the buffer (throws std::out_of_range otherwise).
+  void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
+  void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
+  template <class T>
+  std::vector<T> download_all() const {
+    std::vector<T> out(mSize / sizeof(T));
+    download(out.data(), out.size() * sizeof(T));
+    return out;
+  }
+  void fill_zero();
+
+  void bind_storage(unsigned binding) const;  // layout(std430, binding = …) buffer
+  void bind_uniform(unsigned binding) const;  // layout(std140, binding = …) uniform
+
+ private:
+  std::uint32_t mId = 0;
+  std::size_t mSize = 0;
+};
+
+enum class TextureFormat { R32F, RGBA32F };
+
+// A single-level 2D float texture (no mipmaps, nearest filtering, clamp to edge).
+// Shaders read it with texelFetch (exact) or bind it as an image.
+class Texture2D {
+ public:
+  Texture2D() = default;
+  Texture2D(int width, int height, TextureFormat format);
+  ~Texture2D();
+  Texture2D(Texture2D&& other) noexcept;
+  Texture2D& operator=(Texture2D&& other) noexcept;
+  Texture2D(const Texture2D&) = delete;
+  Texture2D& operator=(const Texture2D&) = delete;
+
+  std::uint32_t id() const { return mId; }
+  int width() const { return mWidth; }
+  int height() const { return mHeight; }
+  int channels() const { return mFormat == TextureFormat::R32F ? 1 : 4; }
+
+  // Whole-texture transfers, row 0 first; size must be width·height·channels.
+  void upload(std::span<const float> texels);
+  std::vector<float> download() const;
+
+  void bind_sampler(unsigned unit) const;                       // sampler2D at `unit`
+  void bind_image(unsigned unit, bool read, bool write) const;  // image2D at `unit`
+
+ private:
+  std::uint32_t mId = 0;
+  int mWidth = 0, mHeight = 0;
+  TextureFormat mFormat = TextureFormat::R32F;
+};
+
+}  // namespace skylit::gpu

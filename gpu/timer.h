@@ -1,0 +1,40 @@
+// GPU-side timing with GL_TIME_ELAPSED queries, for benchmarks: measures the time the
+// GPU spent on the commands issued between begin() and end(), excluding CPU overhead.
+#pragma once
+
+#include <cstdint>
+
+namespace skylit::gpu {
+
+class GpuTimer {
+ public:
+  GpuTimer();  // needs a current context
+  ~GpuTimer();
+  GpuTimer(const GpuTimer&) = delete;
+  GpuTimer& operator=(const GpuTimer&) = delete;
+
+  // One begin/end pair at a time (GL allows one active TIME_ELAPSED query).
+  void begin();
+  void end();
+  // Waits for the GPU to finish the timed commands; milliseconds. Throws
+  // std::logic_error unless begin() and end() came first.
+  double elapsed_ms() const;
+
+ private:
+  std::uint32_t mQuery = 0;
+  bool mActive = false, mHasResult = false;
+};
+
+// Times a scope: begin() on construction, end() on destruction.
+class ScopedGpuTimer {
+ public:
+  explicit ScopedGpuTimer(GpuTimer& timer) : mTimer(timer) { mTimer.begin(); }
+  ~ScopedGpuTimer() { mTimer.end(); }
+  ScopedGpuTimer(const ScopedGpuTimer&) = delete;
+  ScopedGpuTimer& operator=(const ScopedGpuTimer&) = delete;
+
+ private:
+  GpuTimer& mTimer;
+};
+
+}  // namespace skylit::gpu

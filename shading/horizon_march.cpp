@@ -1,0 +1,107 @@
+#include "shading/horizon_march.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace skylit::shading {
+
+void validate(const MarchOptions& o) {
+  if (o.azimuths < 1) throw std::invalid_argument("march: azimuths must be ≥ 1");
+  if (o.k_v < 1) throw std::invalid_argument("march: k_v must be ≥ 1");
+  if (o.levels < 0) throw std::invalid_argument("march: levels must be ≥ 0 (0 = automatic)");
+  if (!std::isfinite(o.level_offset)) throw std::invalid_argument("march: level offset must be finite");
+  if (!(o.max_distance_m >= 0.0) || !std::isfinite(o.max_distance_m))
+    throw std::invalid_argument("march: max distance must be ≥ 0 (0 = DEM extent)");
+  if (o.curvature.enabled && !(o.curvature.radius_m > 0.0 && o.curvature.refraction_k < 1.0))
+    throw std::invalid_argument("march: Earth radius must be > 0 and refraction k < 1");
+}
+
+double resolved_max_distance(const terrain::HeightField& field, const MarchOptions& o) {
+  return o.max_distance_m > 0.0 ? o.max_distance_m : dem_extent(field);
+}
+
+int auto_march_levels(double max_distance, double texel, int k_v) {
+  if (max_distance <= texel) return 1;
+  return static_cast<int>(std::ceil(k_v * std::log2(max_distance / texel) - 1e-9)) + 1;
+}
+
+double tangent_plane_floor(const glm::dvec3& n, Heading u) {
+  return -std::atan((n.x * u.east + n.y * u.north) / n.z);
+}
+
+HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options)
+    : field_(field), options_(options) {
+  validate(options_);
+  const double d_max = resolved_max_distance(field_, options_);
+  const double texel = min_texel_size(field_);
+  const int n_v = options_.levels > 0 ? options_.levels : auto_march_levels(d_max, texel, options_.k_v);
+  int top_level = 0;
+  if (options_.use_pyramid) {
+    pyramid_.build(field_, terrain::PyramidOptions{.k_v = options_.k_v});
+    top_level = pyramid_.levels() - 1;
+  }
+  distances_.resize(n_v);
+  levels_.resize(n_v);
+  for (int s = 0; s < n_v; ++s) {
+    const double t = d_max * std::exp2(-static_cast<double>(n_v - 1 - s) / options_.k_v);
+    distances_[s] = t;
+    const double level = options_.k_v * (std::log2(t / texel) - options_.level_offset);
+    levels_[s] = std::clamp(static_cast<int>(std::lround(level)), 0, top_level);
+  }
+}
+
+double HorizonMarcher::height_at(int step, GridPoint p) const {
+  if (!options_.use_pyramid) return bilinear_height(field_, p);
+  return pyramid_.sample(levels_[step], p.x, p.y, terrain::Interpolation::CubicBSpline);
+}
+
+double HorizonMarcher::max_elevation(int i, int j, Heading u) const {
+  const double h0 = field_.at(i, j);
+  // Slopes tan ω_s of the steps that lie on the grid (a prefix of the schedule).
+  // atan is monotonic, so angles are taken only where the result needs them.
+  constexpr int kInline = 64;
+  double slope_buf[kInline], angle_buf[kInline];
+  std::vector<double> slope_heap, angle_heap;
+  double* q = slope_buf;
+  double* w = angle_buf;
+  if (steps() > kInline) {
+    slope_heap.resize(steps()), angle_heap.resize(steps());
+    q = slope_heap.data(), w = angle_heap.data();
+  }
+  int m = 0, steepest = 0;
+  for (int s = 0; s < steps(); ++s) {
+    const double t = distances_[s];
+    const GridPoint p = ray_point(field_, i, j, u, t);
+    if (!on_grid(field_, p)) break;
+    q[m] = (height_at(s, p) - options_.curvature.drop(t) - h0) / t;
+    if (q[m] > q[steepest]) steepest = m;
+    ++m;
+  }
+  if (m == 0) return -std::numeric_limits<double>::infinity();
+  if (!options_.smooth_max) return std::atan(q[steepest]);
+  // Uniform cubic B-spline through the angles, ends replicated: max of the curve at
+  // every knot and midpoint. Each is a convex combination of angles s−1 … s+2, so a
+  // window whose steepest slope is ≤ tan(best) cannot raise the max: skipped, which
+  // leaves the result unchanged and saves most atan calls.
+  std::fill(w, w + m, std::numeric_limits<double>::quiet_NaN());
+  auto slope = [&](int s) { return q[std::clamp(s, 0, m - 1)]; };
+  auto angle = [&](int s) {
+    s = std::clamp(s, 0, m - 1);
+    if (std::isnan(w[s])) w[s] = std::atan(q[s]);
+    return w[s];
+  };
+  double best = -std::numeric_limits<double>::infinity(), best_slope = best;
+  auto visit = [&](int s) {
+    if (std::max({slope(s - 1), slope(s), slope(s + 1), slope(s + 2)}) <= best_slope) return;
+    const double knot = (angle(s - 1) + 4.0 * angle(s) + angle(s + 1)) / 6.0;
+    const double mid = (angle(s - 1) + 23.0 * angle(s) + 23.0 * angle(s + 1) + angle(s + 2)) / 48.0;
+    if (std::max(knot, mid) > best) best = std::max(knot, mid), best_slope = std::tan(best);
+  };
+  for (int s = std::max(0, steepest - 2); s <= std::min(m - 1, steepest + 1); ++s) visit(s);  // a good start
+  for (int s = 0; s < m; ++s) visit(s);
+  return best;
+}
+
+}  // namespace skylit::shading

@@ -1,0 +1,81 @@
+// Multi-resolution horizon marching (SN08/NS09 §5.2, DESIGN.md pipeline step 3), CPU
+// reference in double precision.
+//
+// From texel p with own height h₀ along heading u, step s = 0 … n_v−1 sits at
+//   t_s = τ_s·D,   τ_s = 2^(−(n_v−1−s)/k_v)                  (NS09 eq. 14)
+// so the last step is at the maximum distance D. Step s reads pyramid level
+//   ℓ_s = round(k_v·log2(t_s·2^(−o_v) / texel)),  clamped to the pyramid,
+// i.e. the level whose texel is 2^(−o_v) of the distance (o_v = 2: a quarter; the
+// samples, 0.16·t apart at k_v = 4, then never skip a texel of their level).
+// Blocking angle: ω_s = atan((f_ℓ(p + t_s u) − d²/(2R_eff) − h₀)/t_s), h₀ the
+// pixel centre's own (unfiltered) height (DESIGN.md "Conventions").
+// Samples leaving the grid end the ray. The result is the max over ω_s, or the max of
+// their uniform cubic B-spline sampled at knots and midpoints (NS09 eq. 17, weights
+// (1,4,1)/6 and (1,23,23,1)/48; end values replicated — the listing pads with 0,
+// which drags the first knot toward the horizontal).
+// Floors are applied by the callers: the tangent plane for visibility (✱ math-notes
+// §10.14), the receiver's ground level for the `horizon` product.
+#pragma once
+
+#include "shading/azimuth.h"
+#include "shading/earth_curvature.h"
+#include "shading/horizon_ray.h"
+#include "terrain/height_field.h"
+#include "terrain/pyramid.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace skylit::shading {
+
+struct MarchOptions {
+  int azimuths = 32;            // W
+  int k_v = 4;                  // pyramid levels (and steps) per halving of resolution
+  int levels = 0;               // n_v march steps; 0 = enough that t_0 ≤ one texel
+  double level_offset = 2.0;    // o_v
+  double max_distance_m = 0.0;  // D; 0 = the DEM extent (diagonal)
+  bool smooth_max = true;       // B-spline max of blocking angles; false = plain max
+  bool use_pyramid = true;      // false: every step samples level 0 bilinearly
+  EarthCurvature curvature;     // on by default
+};
+
+// Throws std::invalid_argument for W < 1, k_v < 1, n_v < 0, D < 0, non-finite values.
+void validate(const MarchOptions& options);
+
+// Maximum marching distance D (m) that `options` resolves to on `field`.
+double resolved_max_distance(const terrain::HeightField& field, const MarchOptions& options);
+
+// n_v that puts the first step within one (smallest-side) texel: ⌈k_v·log2(D/texel)⌉ + 1.
+int auto_march_levels(double max_distance, double texel, int k_v);
+
+// Tangent-plane elevation of heading u for unit normal n (east, north, up):
+// −atan(N_h·u / N_z). Directions at or below it face into the surface.
+double tangent_plane_floor(const glm::dvec3& normal, Heading u);
+
+class HorizonMarcher {
+ public:
+  // Builds the B-spline pyramid (k_v levels per halving) unless use_pyramid is off.
+  HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options);
+
+  // Largest blocking angle (radians) from texel (i, j) along u; −∞ if no step lies
+  // on the grid. Thread-safe.
+  double max_elevation(int i, int j, Heading u) const;
+
+  int steps() const { return static_cast<int>(distances_.size()); }
+  double distance(int s) const { return distances_[s]; }  // t_s (m)
+  int level_of_step(int s) const { return levels_[s]; }
+  double max_distance() const { return distances_.back(); }
+  const MarchOptions& options() const { return options_; }
+
+ private:
+  double height_at(int step, GridPoint p) const;
+
+  const terrain::HeightField& field_;
+  MarchOptions options_;
+  terrain::HeightPyramid pyramid_;
+  std::vector<double> distances_;
+  std::vector<int> levels_;
+};
+
+}  // namespace skylit::shading

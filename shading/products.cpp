@@ -1,0 +1,61 @@
+#include "shading/products.h"
+
+#include "shading/azimuth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace skylit::shading {
+
+std::string_view product_name(Product p) {
+  switch (p) {
+    case Product::Horizon: return "horizon";
+    case Product::Svf: return "svf";
+    case Product::Skyview: return "skyview";
+    case Product::Shaded: return "shaded";
+  }
+  return "unknown";
+}
+
+std::optional<Product> parse_product(std::string_view name) {
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
+    if (product_name(p) == name) return p;
+  return std::nullopt;
+}
+
+double svf_from_horizon(const std::vector<double>& sigma) {
+  double sum = 0.0;
+  for (double s : sigma) sum += std::sin(std::max(s, 0.0));
+  return 1.0 - sum / static_cast<double>(sigma.size());
+}
+
+double skyview_slice_integral(double lo, const glm::dvec3& n, double u_east, double u_north) {
+  // n·ω(e) = a cos e + b sin e = R cos(e − δ): positive for e > δ − π/2 (b = n_z > 0
+  // keeps δ + π/2 above the zenith). ∫ (a cos e + b sin e) cos e de = F(e) below.
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  const double a = n.x * u_east + n.y * u_north, b = n.z;
+  const double lower = std::max(lo, std::atan2(b, a) - kHalfPi);
+  if (lower >= kHalfPi) return 0.0;
+  auto F = [&](double e) { return a * (e / 2 + std::sin(2 * e) / 4) + b * std::sin(e) * std::sin(e) / 2; };
+  return (F(kHalfPi) - F(lower)) / std::numbers::pi;
+}
+
+double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& normal) {
+  const int w = static_cast<int>(sigma.size());
+  double sum = 0.0;
+  for (int k = 0; k < w; ++k) {
+    const Heading u = heading_from_geographic(band_azimuth(k, w));
+    // The uniform sky exists only above the horizontal.
+    sum += skyview_slice_integral(std::max(sigma[k], 0.0), normal, u.east, u.north);
+  }
+  return sum * kTwoPi / w;
+}
+
+float srgb_code_value(double linear) {
+  const double x = std::clamp(linear, 0.0, 1.0);
+  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+  return static_cast<float>(1.0 + std::round(254.0 * encoded));
+}
+
+}  // namespace skylit::shading

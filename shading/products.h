@@ -1,0 +1,96 @@
+// Physical products of the CPU reference pipeline (DESIGN.md "Products"): the
+// public entry point the `skylit shade` CLI calls. Every product is computed in
+// double precision per texel and returned as float bands.
+//
+// Definitions (tests rely on them; σ_k = marched horizon elevation at azimuth k):
+//  * horizon : σ_k in degrees, one band per geographic azimuth A_k = k·360°/W (from
+//              north, clockwise). σ_k is the largest elevation angle of the terrain
+//              along the ray, seen from the texel centre's own height, never below the
+//              receiver's own ground level: ≥ 0 on flat or falling ground — only the
+//              Earth-curvature drop makes it negative (−atan(t₁/(2R_eff)) with t₁ the
+//              first march distance on a flat plane).
+//  * svf     : 1 − (1/W)·Σ_k sin(max(σ_k, 0))  (Zakšek et al. 2011).
+//  * skyview : (1/π)∫ V(ω) max(n·ω, 0) dω, sky above the horizontal only, n the Horn
+//              normal; per azimuth slice the elevation integral is exact (closed form)
+//              over e ∈ (max(σ_k, 0), π/2], midpoint rule over the W slices. Open flat
+//              ground gives 1, a tilted open plane (1 + cos s)/2.
+//  * shaded  : relief under a uniform sky of radiance 1 (above the horizontal), SH
+//              visibility from the marched horizons (wedge assembly) shaded by the
+//              default sky×BRDF table of shading_modes, Lambert albedo; outgoing
+//              radiance → exposure → sRGB → 8-bit code values 1…255 as floats (0 is
+//              left for nodata, as gdaldem does).
+// Nodata texels are NaN in every band (the writer maps NaN to nodata).
+#pragma once
+
+#include "shading/horizon_march.h"
+#include "terrain/height_field.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace skylit::shading {
+
+enum class Product { Horizon, Svf, Skyview, Shaded };
+
+std::string_view product_name(Product p);
+// "horizon", "svf", "skyview", "shaded"; nullopt otherwise.
+std::optional<Product> parse_product(std::string_view name);
+
+struct ExactOptions {
+  int sky_azimuths = 360;       // svf/skyview ground truth: azimuths of the sky integral
+  double step_texels = 0.5;     // march step, in texels along the ray's dominant axis
+};
+
+struct ShadedOptions {
+  double albedo = 1.0;          // Lambert albedo
+  double exposure = 1.0;        // linear radiance multiplier before the sRGB curve
+  int sh_order = 4;             // n: SH bands of the visibility
+  int nlp_order = 8;            // N ≥ n (N = 2n removes most of the odd-|m| floor)
+};
+
+struct ProductOptions {
+  MarchOptions march;           // W, k_v, n_v, o_v, max distance, curvature, smoothing
+  bool exact = false;           // ground truth: dense half-texel march (see horizon_exact.h)
+  ExactOptions exact_options;
+  ShadedOptions shaded;
+  unsigned threads = 0;         // worker threads over rows; 0 = hardware concurrency
+};
+
+// Float bands, band-major: value(b, i, j) = data[(b·height + j)·width + i].
+struct ProductBands {
+  int width = 0;
+  int height = 0;
+  int bands = 0;
+  std::vector<float> data;
+  std::vector<std::string> band_names;  // e.g. "horizon_az045.0" (degrees from north)
+
+  float at(int b, int i, int j) const {
+    return data[(static_cast<std::size_t>(b) * height + j) * width + i];
+  }
+};
+
+// Fraction done in [0, 1]; called from worker threads, one call at a time.
+using ProgressCallback = std::function<void(double fraction)>;
+
+// Computes `product` for every texel of `field`. Throws std::invalid_argument on bad
+// options (W < 1, k_v < 1, negative distances, …).
+ProductBands compute_product(const terrain::HeightField& field, Product product, const ProductOptions& options,
+                             const ProgressCallback& progress = {});
+
+// Per-texel formulas of the products from horizon elevations (radians) at
+// geographic azimuths A_k = k·2π/W; normal in (east, north, up), unit.
+double svf_from_horizon(const std::vector<double>& sigma);
+double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& normal);
+
+// (1/π)·∫_{e ∈ (lo, π/2]} max(n·ω(e), 0) cos e de for the horizontal unit direction u
+// (east, north) of one azimuth: the exact elevation integral of one skyview slice
+// (multiply by Δφ and sum over slices).
+double skyview_slice_integral(double lo, const glm::dvec3& normal, double u_east, double u_north);
+
+// 8-bit sRGB code value (1…255) of a linear radiance after exposure.
+float srgb_code_value(double linear);
+
+}  // namespace skylit::shading

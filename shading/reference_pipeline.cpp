@@ -1,0 +1,173 @@
+#include "shading/reference_pipeline.h"
+
+#include "shading/azimuth.h"
+#include "shading/shading_modes.h"
+#include "shading/surface_normals.h"
+#include "shading/wedge.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <thread>
+
+namespace skylit::shading {
+
+void parallel_rows(int rows, unsigned threads, const std::function<void(int)>& body,
+                   const ProgressCallback& progress) {
+  if (rows <= 0) return;
+  unsigned n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+  n = std::min<unsigned>(n, static_cast<unsigned>(rows));
+  std::atomic<int> next{0};
+  int done = 0;
+  std::mutex mutex;  // guards done, error and the progress callback
+  std::exception_ptr error;
+  auto worker = [&] {
+    for (int row; (row = next.fetch_add(1)) < rows;) {
+      try {
+        body(row);
+        std::lock_guard lock(mutex);
+        ++done;
+        if (progress && !error) progress(static_cast<double>(done) / rows);
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+        next = rows;
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options) : field_(field) {
+  validate(options.march);
+  if (!options.exact) {
+    marcher_ = std::make_unique<HorizonMarcher>(field, options.march);
+    return;
+  }
+  if (!(options.exact_options.step_texels > 0.0)) throw std::invalid_argument("exact: step must be > 0");
+  exact_ = ExactMarch{options.exact_options.step_texels, options.march.max_distance_m, options.march.curvature};
+}
+
+double HorizonOracle::max_elevation(int i, int j, Heading u) const {
+  return marcher_ ? marcher_->max_elevation(i, j, u) : exact_max_elevation(field_, i, j, u, exact_);
+}
+
+double HorizonOracle::ground_floor(int j, Heading u) const {
+  const EarthCurvature& c = marcher_ ? marcher_->options().curvature : exact_.curvature;
+  if (!c.enabled) return 0.0;
+  const double t1 = marcher_ ? marcher_->distance(0) : exact_step_length(field_, j, u, exact_.step_texels);
+  return -std::atan(t1 / (2.0 * c.effective_radius()));
+}
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+std::string horizon_band_name(int k, int w) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / w);
+  return buf;
+}
+
+// Headings of the W product bands (geographic) or of the wedge samples (math frame).
+std::vector<Heading> geographic_headings(int w) {
+  std::vector<Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = heading_from_geographic(band_azimuth(k, w));
+  return h;
+}
+std::vector<Heading> math_headings(int w) {
+  std::vector<Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = heading_from_math(kTwoPi * k / w);
+  return h;
+}
+
+}  // namespace
+
+ProductBands compute_product(const terrain::HeightField& field, Product product, const ProductOptions& options,
+                             const ProgressCallback& progress) {
+  if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
+  const HorizonOracle oracle(field, options);
+  const int w_march = options.march.azimuths;
+  const int w_sky = options.exact ? options.exact_options.sky_azimuths : w_march;
+  if (w_sky < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
+  if (!(options.shaded.albedo >= 0.0) || !(options.shaded.exposure > 0.0))
+    throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+
+  ProductBands out;
+  out.width = field.width;
+  out.height = field.height;
+  out.bands = product == Product::Horizon ? w_march : 1;
+  out.data.assign(static_cast<std::size_t>(out.bands) * field.size(), kNaN);
+  if (product == Product::Horizon)
+    for (int k = 0; k < w_march; ++k) out.band_names.push_back(horizon_band_name(k, w_march));
+  else
+    out.band_names.emplace_back(product_name(product));
+  auto put = [&](int b, int i, int j, double v) {
+    out.data[(static_cast<std::size_t>(b) * field.height + j) * field.width + i] = static_cast<float>(v);
+  };
+
+  // Shading set-up: wedge operator, and the default shading mode (sky × BRDF table,
+  // Lambert) under a uniform sky of radiance 1 above the horizontal.
+  const sh::WedgeOperator* wedge = nullptr;
+  std::unique_ptr<Shader> shader;
+  if (product == Product::Shaded) {
+    const ShadedOptions& s = options.shaded;
+    wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, sh::WedgeInterpolation::Linear);
+    ShadingSettings settings;
+    settings.order = s.sh_order;
+    SkyInput sky;
+    sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+    shader = std::make_unique<Shader>(settings, sky);
+  }
+
+  const std::vector<Heading> headings =
+      product == Product::Horizon ? geographic_headings(w_march)
+      : product == Product::Shaded ? math_headings(w_sky)
+                                   : geographic_headings(w_sky);
+
+  parallel_rows(field.height, options.threads, [&](int j) {
+    std::vector<double> sigma(headings.size());
+    std::vector<double> scratch, vis;
+    if (wedge) {
+      scratch.resize(static_cast<std::size_t>(wedge->azimuths()) * wedge->nlp_order());
+      vis.resize(wedge->rows());
+    }
+    for (int i = 0; i < field.width; ++i) {
+      if (!field.is_valid(i, j)) continue;  // stays NaN
+      const glm::dvec3 n = horn_normal(field, i, j);
+      for (std::size_t k = 0; k < headings.size(); ++k) sigma[k] = oracle.max_elevation(i, j, headings[k]);
+      switch (product) {
+        case Product::Horizon:
+          for (int k = 0; k < w_march; ++k)
+            put(k, i, j, std::max(sigma[k], oracle.ground_floor(j, headings[k])) * 180.0 / std::numbers::pi);
+          break;
+        case Product::Svf: put(0, i, j, svf_from_horizon(sigma)); break;
+        case Product::Skyview: put(0, i, j, skyview_from_horizon(sigma, n)); break;
+        case Product::Shaded: {
+          // Visibility horizon: floored at the tangent plane (math-notes §10.14).
+          for (std::size_t k = 0; k < sigma.size(); ++k)
+            sigma[k] = std::clamp(std::max(sigma[k], tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
+                                  std::numbers::pi / 2);
+          sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
+          const double radiance = options.shaded.albedo * shader->shade(vis, n, n);
+          put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
+          break;
+        }
+      }
+    }
+  }, progress);
+  return out;
+}
+
+}  // namespace skylit::shading

@@ -1,0 +1,39 @@
+// The CPU reference pipeline behind compute_product (products.h): per texel, horizons
+// from the multi-resolution march or the exact march, then the product formulas;
+// rows spread over worker threads. Double precision throughout; clear, not fast.
+#pragma once
+
+#include "shading/horizon_exact.h"
+#include "shading/horizon_march.h"
+#include "shading/products.h"
+
+#include <functional>
+#include <memory>
+
+namespace skylit::shading {
+
+// Calls body(row) for every row in [0, rows) on `threads` workers (0 = hardware
+// concurrency), reporting the fraction of rows done. The first exception thrown by
+// a body stops the remaining rows and is rethrown here.
+void parallel_rows(int rows, unsigned threads, const std::function<void(int row)>& body,
+                   const ProgressCallback& progress = {});
+
+// The horizon of one texel and heading, from either marcher; raw maxima, no floor.
+class HorizonOracle {
+ public:
+  HorizonOracle(const terrain::HeightField& field, const ProductOptions& options);
+
+  bool exact() const { return !marcher_; }
+  // Largest elevation angle (rad) along u from texel (i, j); −∞ if none on the grid.
+  double max_elevation(int i, int j, Heading u) const;
+  // The receiver's own ground level seen at the first march distance t₁ (the floor of
+  // the `horizon` product): 0, or −atan(t₁/(2R_eff)) with Earth curvature.
+  double ground_floor(int j, Heading u) const;
+
+ private:
+  const terrain::HeightField& field_;
+  std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march
+  ExactMarch exact_;
+};
+
+}  // namespace skylit::shading

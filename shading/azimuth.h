@@ -23,7 +23,12 @@ struct Heading {
   double east = 0.0;
   double north = 1.0;
 };
-inline Heading heading_from_geographic(double geographic) { return {std::sin(geographic), std::cos(geographic)}; }
-inline Heading heading_from_math(double phi) { return {std::cos(phi), std::sin(phi)}; }
+// sin/cos leave ~1e−16 where the exact component is 0 (N, E, S, W); snapping it
+// keeps rays along the grid's edge rows/columns on the grid.
+inline double snap_to_zero(double v) { return std::abs(v) < 1e-12 ? 0.0 : v; }
+inline Heading heading_from_geographic(double geographic) {
+  return {snap_to_zero(std::sin(geographic)), snap_to_zero(std::cos(geographic))};
+}
+inline Heading heading_from_math(double phi) { return {snap_to_zero(std::cos(phi)), snap_to_zero(std::sin(phi))}; }
 
 }  // namespace skylit::shading

@@ -33,13 +33,24 @@ inline GridPoint ray_point(const terrain::HeightField& f, int i, int j, Heading 
   return {x, y};
 }
 
-// Inside the span of texel centres, where bilinear interpolation needs no clamping.
+// Tolerance (texels) for a sample on the grid's last row/column: a few float ulps of
+// the largest coordinate, so rounding (double here, float on the GPU, which uses the
+// same value) never decides whether an edge sample counts.
+inline double edge_epsilon_texels(const terrain::HeightField& f) {
+  return 1e-6 * std::max(f.width, f.height) + 1e-5;
+}
+
+// Inside the span of texel centres (within the edge tolerance); bilinear_height
+// clamps the few samples that sit within the tolerance outside it.
 inline bool on_grid(const terrain::HeightField& f, GridPoint p) {
-  return p.x >= 0.0 && p.y >= 0.0 && p.x <= f.width - 1 && p.y <= f.height - 1;
+  const double e = edge_epsilon_texels(f);
+  return p.x >= -e && p.y >= -e && p.x <= f.width - 1 + e && p.y <= f.height - 1 + e;
 }
 
 // Bilinear height at a point on the grid (filled heights under nodata).
 inline double bilinear_height(const terrain::HeightField& f, GridPoint p) {
+  p.x = std::clamp(p.x, 0.0, static_cast<double>(f.width - 1));
+  p.y = std::clamp(p.y, 0.0, static_cast<double>(f.height - 1));
   const int i0 = std::min(static_cast<int>(p.x), f.width - 2 < 0 ? 0 : f.width - 2);
   const int j0 = std::min(static_cast<int>(p.y), f.height - 2 < 0 ? 0 : f.height - 2);
   const int i1 = std::min(i0 + 1, f.width - 1), j1 = std::min(j0 + 1, f.height - 1);

@@ -1,4 +1,4 @@
-// SH exponentiation report (docs/numerics/exponentiation.md): HYB vs T2 = expm(M_f)·1
+// SH exponentiation report (docs/numerics.md §2): HYB vs T2 = expm(M_f)·1
 // vs T1 = pointwise exp* vs T0 = projection of the true visibility, for sphere
 // scenes (1–400 spheres, random in a cone or coincident), ε, guards, bases,
 // thresholds, height-field vectors, and float32 vs double. Usage: exp_report [order]

@@ -1,4 +1,4 @@
-// Shading-mode accuracy report (docs/numerics/shading.md): the outgoing radiance
+// Shading-mode accuracy report (docs/numerics.md §3): the outgoing radiance
 // ∫ L·V·g_r dω of each mode of shading_modes.h against brute force
 // (visibility_truth::integrate, exact in elevation per azimuth), for Lambert and
 // Phong r = 4, 16, with no occluder, a height-field horizon, and 1, 3, 10 spheres

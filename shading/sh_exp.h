@@ -26,7 +26,7 @@ Vec exp_product_algebra(std::span<const double> f);
 
 // Default ε of log-visibility (log ε inside a blocker) and of the HYB log floor:
 // the best or near-best vector error over 10–400 overlapping spheres with the
-// guards on, shadows still 90 % opaque (docs/numerics/exponentiation.md, table D).
+// guards on, shadows still 90 % opaque (docs/numerics.md §2, table D).
 inline constexpr double kDefaultLogEpsilon = 0.1;
 
 enum class HybBase {
@@ -35,7 +35,7 @@ enum class HybBase {
   kTaylor1,        // g = 1 + h
 };
 
-// Defaults chosen from the measurements in docs/numerics/exponentiation.md.
+// Defaults chosen from the measurements in docs/numerics.md §2.
 struct HybOptions {
   // PS2 beats OL 2–22× on single spheres and ~30× on height-field vectors, ties
   // on heavy overlap, for one extra product.

@@ -17,7 +17,7 @@
 // Inputs: V is the order-n SH visibility (n² entries) or, for LogBrdf, the
 // log-visibility (log ε·occlusion summed over height field and blockers). The sky
 // is its order-n SH vector L̃ (LogBrdf, TripleProduct) or its radiance function
-// (SkyBrdfTable). Measured accuracy of each mode: docs/numerics/shading.md.
+// (SkyBrdfTable). Measured accuracy of each mode: docs/numerics.md §3.
 #pragma once
 
 #include "shading/brdf.h"

@@ -143,7 +143,7 @@ TEST(ShExp, HybMatchesProductAlgebraForSingleSpheres) {
   // HYB approximates T2, but even an exact base leaves the squaring limit L (many
   // squarings of a tiny h) off T2 by non-associativity (math-notes §6.3): up to
   // 2.4e-2 at r/d = 0.9. The base error (what t and the base control) is e(H,T2)
-  // beyond that floor; tolerances from docs/numerics/exponentiation.md table A.
+  // beyond that floor; tolerances from docs/numerics.md §2 table A.
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.4, -0.2, 0.9));
   for (int order : {2, 4, 6, 8})
     for (double eps : {0.01, 0.1, 0.2, 0.5})

@@ -1,7 +1,7 @@
 // Shading modes (shading/shading_modes.h, shading/sky_brdf_table.h) against
 // brute force ∫ L·V·g dω by visibility_truth::integrate (exact in elevation per
 // azimuth, split at the lobe's kink), and the table against closed forms.
-// Tolerances are the measured errors (docs/numerics/shading.md) with margin.
+// Tolerances are the measured errors (docs/numerics.md §3) with margin.
 #include "shading/brdf.h"
 #include "shading/quadrature.h"
 #include "shading/sh_exp.h"

@@ -31,15 +31,8 @@ struct ShadeArgs {
   std::vector<std::string> creation_options;
   double z_factor = 1.0;
   std::optional<double> scale, xscale, yscale;
-  int azimuths = 32;
-  bool exact = false;
+  shading::ProductOptions options;  // defaults come from the library
   bool no_curvature = false;
-  double max_distance = 0.0;
-  int k_v = 4;
-  double level_offset = 2.0;
-  int sh_order = 4;
-  int nlp_order = 8;
-  double exposure = 1.0;
   std::string backend = default_backend();
   unsigned threads = 0;
   bool quiet = false;
@@ -74,16 +67,8 @@ int run_shade(const ShadeArgs& a) {
 
   const terrain::HeightField field = load_input(a);
 
-  shading::ProductOptions opt;
-  opt.march.azimuths = a.azimuths;
-  opt.march.k_v = a.k_v;
-  opt.march.level_offset = a.level_offset;
-  opt.march.max_distance_m = a.max_distance;
+  shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
-  opt.exact = a.exact;
-  opt.shaded.sh_order = a.sh_order;
-  opt.shaded.nlp_order = a.nlp_order;
-  opt.shaded.exposure = a.exposure;
   opt.threads = a.threads;
 
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
@@ -113,16 +98,16 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
   cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(CLI::PositiveNumber);
   cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
-  cmd->add_option("--azimuths", args->azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
-  cmd->add_flag("--exact", args->exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
+  cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
+  cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
-  cmd->add_option("--max-distance", args->max_distance, "Maximum marching distance in metres (0: the DEM extent)")
+  cmd->add_option("--max-distance", args->options.march.max_distance_m, "Maximum marching distance in metres (0: the DEM extent)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
-  cmd->add_option("--kv", args->k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
-  cmd->add_option("--level-offset", args->level_offset, "Pyramid level offset o_v")->capture_default_str();
-  cmd->add_option("--sh-order", args->sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
-  cmd->add_option("--nlp-order", args->nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
-  cmd->add_option("--exposure", args->exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--kv", args->options.march.k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
+  cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
+  cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
+  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--backend", args->backend, "Compute backend: reference (CPU, double precision)")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");

@@ -33,7 +33,7 @@ struct MarchOptions {
   int azimuths = 32;            // W
   int k_v = 4;                  // pyramid levels (and steps) per halving of resolution
   int levels = 0;               // n_v march steps; 0 = enough that t_0 ≤ one texel
-  double level_offset = 2.0;    // o_v
+  double level_offset = 3.0;    // o_v (NS09: 2; 3 measured 1/3 more accurate, docs/accuracy.md)
   double max_distance_m = 0.0;  // D; 0 = the DEM extent (diagonal)
   bool smooth_max = true;       // B-spline max of blocking angles; false = plain max
   bool use_pyramid = true;      // false: every step samples level 0 bilinearly

@@ -3,8 +3,25 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace skylit::quad {
+
+namespace {
+
+// P_n(x) and P_n'(x) by the three-term recurrence.
+std::pair<double, double> legendre_with_derivative(int n, double x) {
+  double p0 = 1.0, p1 = x;
+  for (int k = 2; k <= n; ++k) {
+    const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+    p0 = p1;
+    p1 = p2;
+  }
+  if (n == 1) p0 = 1.0;
+  return {p1, n * (x * p1 - p0) / (x * x - 1.0)};
+}
+
+}  // namespace
 
 Rule1D gauss_legendre(int n, double a, double b) {
   if (n < 1) throw std::invalid_argument("gauss_legendre: n must be ≥ 1");
@@ -13,30 +30,14 @@ Rule1D gauss_legendre(int n, double a, double b) {
   r.weights.resize(n);
   const double half = 0.5 * (b - a), mid = 0.5 * (b + a);
   for (int i = 0; i < (n + 1) / 2; ++i) {
-    double x = std::cos(sh::kPi * (i + 0.75) / (n + 0.5));
-    double dp = 0.0;
+    double x = std::cos(sh::kPi * (i + 0.75) / (n + 0.5));  // Newton from Tricomi's guess
     for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      if (n == 1) { p1 = x; p0 = 1.0; }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const double dx = p1 / dp;
+      const auto [p, dp] = legendre_with_derivative(n, x);
+      const double dx = p / dp;
       x -= dx;
       if (std::abs(dx) < 1e-16) break;
     }
-    // Recompute derivative at the converged root for the weight.
-    double p0 = 1.0, p1 = x;
-    for (int k = 2; k <= n; ++k) {
-      const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-      p0 = p1;
-      p1 = p2;
-    }
-    if (n == 1) { p1 = x; p0 = 1.0; }
-    dp = n * (x * p1 - p0) / (x * x - 1.0);
+    const double dp = legendre_with_derivative(n, x).second;
     const double w = 2.0 / ((1.0 - x * x) * dp * dp);
     r.nodes[i] = mid - half * x;
     r.nodes[n - 1 - i] = mid + half * x;
@@ -45,9 +46,9 @@ Rule1D gauss_legendre(int n, double a, double b) {
   return r;
 }
 
-SphereRule sphere_product_rule(int nz, int nphi) {
+SphereRule sphere_product_rule(int nz, int nphi, double z_min, double z_max) {
   if (nphi < 1) throw std::invalid_argument("sphere_product_rule: nphi must be ≥ 1");
-  const Rule1D gz = gauss_legendre(nz);
+  const Rule1D gz = gauss_legendre(nz, z_min, z_max);
   SphereRule s;
   s.dirs.reserve(static_cast<std::size_t>(nz) * nphi);
   s.weights.reserve(s.dirs.capacity());

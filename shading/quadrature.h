@@ -23,8 +23,9 @@ struct SphereRule {
   std::vector<double> weights;  // sum to 4π
 };
 
-// nz Gauss–Legendre nodes in z × nphi midpoint nodes in φ.
-SphereRule sphere_product_rule(int nz, int nphi);
+// nz Gauss–Legendre nodes in z ∈ [z_min, z_max] × nphi midpoint nodes in φ
+// (z ∈ [0, 1]: the upper hemisphere, for integrands cut at the horizon).
+SphereRule sphere_product_rule(int nz, int nphi, double z_min = -1.0, double z_max = 1.0);
 // A rule exact for products of three SH functions of the given order.
 SphereRule sphere_rule_for_order(int order);
 

@@ -10,23 +10,7 @@
 
 namespace skylit::sky {
 
-quad::SphereRule upper_hemisphere_rule(int nz, int nphi) {
-  if (nphi < 1) throw std::invalid_argument("upper_hemisphere_rule: nphi must be ≥ 1");
-  const quad::Rule1D gz = quad::gauss_legendre(nz, 0.0, 1.0);
-  quad::SphereRule s;
-  s.dirs.reserve(static_cast<std::size_t>(nz) * nphi);
-  s.weights.reserve(s.dirs.capacity());
-  const double dphi = 2.0 * sh::kPi / nphi;
-  for (int i = 0; i < nz; ++i) {
-    const double z = gz.nodes[i], r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    for (int j = 0; j < nphi; ++j) {
-      const double phi = (j + 0.5) * dphi;
-      s.dirs.push_back({r * std::cos(phi), r * std::sin(phi), z});
-      s.weights.push_back(gz.weights[i] * dphi);
-    }
-  }
-  return s;
-}
+quad::SphereRule upper_hemisphere_rule(int nz, int nphi) { return quad::sphere_product_rule(nz, nphi, 0.0, 1.0); }
 
 int RgbSh::order() const { return sh::order_of(c[0].size()); }
 

@@ -7,7 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libgdal-dev gdal-bin libgeographiclib-dev
   libglfw3-dev libglm-dev libopenimageio-dev openimageio-tools
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev mesa-utils
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
 )
 

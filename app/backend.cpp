@@ -1,10 +1,42 @@
 #include "app/backend.h"
 
+#include "gpu/gl_context.h"
+#include "gpu/gpu_pipeline.h"
+
+#include <iostream>
+#include <memory>
 #include <stdexcept>
 
 namespace skylit::app {
+namespace {
 
-std::vector<std::string> backend_names() { return {"reference"}; }
+// One line: EGL explains each platform's failure on its own lines.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+std::unique_ptr<gpu::HeadlessContext> try_context(std::string* why) {
+  try {
+    return std::make_unique<gpu::HeadlessContext>();
+  } catch (const std::exception& e) {
+    if (why) *why = one_line(e.what());
+    return nullptr;
+  }
+}
+
+shading::ProductBands run_gpu(const gpu::HeadlessContext& context, const terrain::HeightField& field,
+                              shading::Product product, const shading::ProductOptions& options,
+                              const shading::ProgressCallback& progress) {
+  context.make_current();
+  const gpu::GpuProductPipeline pipeline(product, options);  // destroyed while current
+  return pipeline.compute(field, progress);
+}
+
+}  // namespace
+
+std::vector<std::string> backend_names() { return {"auto", "gpu", "reference"}; }
 
 std::string default_backend() { return backend_names().front(); }
 
@@ -12,6 +44,27 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
                                            shading::Product product, const shading::ProductOptions& options,
                                            const shading::ProgressCallback& progress) {
   if (backend == "reference") return shading::compute_product(field, product, options, progress);
+  if ((backend == "gpu" || backend == "auto") && !gpu::gpu_supports(product, options)) {
+    if (backend == "auto") return shading::compute_product(field, product, options, progress);
+    throw std::invalid_argument("--backend gpu cannot compute '" + std::string(shading::product_name(product)) +
+                                "' with a sun or sky model yet; use --backend reference (or auto)");
+  }
+  if (backend == "gpu" || backend == "auto") {
+    std::string why;
+    const auto context = try_context(&why);
+    if (!context) {
+      if (backend == "gpu") throw std::runtime_error("--backend gpu: " + why);
+      return shading::compute_product(field, product, options, progress);  // auto: no GL 4.5 here
+    }
+    if (backend == "gpu") return run_gpu(*context, field, product, options, progress);
+    try {
+      return run_gpu(*context, field, product, options, progress);
+    } catch (const std::runtime_error& e) {  // e.g. a field over the GPU's buffer limits
+      std::cerr << "skylit: note: the gpu backend failed (" << one_line(e.what())
+                << "); computing with the reference backend\n";
+      return shading::compute_product(field, product, options, progress);
+    }
+  }
   std::string known;
   for (const auto& b : backend_names()) known += (known.empty() ? "" : ", ") + b;
   throw std::invalid_argument("--backend '" + backend + "' is not available; this build has: " + known);

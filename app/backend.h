@@ -1,5 +1,5 @@
-// Compute backends of `shade`: the double-precision CPU reference, and the GLSL
-// pipeline on the GPU (llvmpipe where no GPU exists).
+// Compute backends of `shade`: the GLSL pipeline on the GPU (llvmpipe where no GPU
+// exists; gpu/gpu_pipeline.h) and the double-precision CPU reference.
 #pragma once
 
 #include "shading/products.h"
@@ -9,12 +9,20 @@
 
 namespace skylit::app {
 
-// Names accepted by --backend, the default first.
+// Names accepted by --backend, the default first:
+//   auto       gpu where an OpenGL 4.5 context can be created and the GPU pipeline
+//              has the product (gpu::gpu_supports: not yet shadow, irradiance or a
+//              lit shaded), else reference; also reference, with a note on stderr,
+//              when the gpu backend fails at run time (e.g. over its buffer limits)
+//   gpu        OpenGL 4.5 compute (an error where no context can be created)
+//   reference  CPU, double precision
 std::vector<std::string> backend_names();
 std::string default_backend();
 
-// Throws std::invalid_argument for an unknown backend, std::runtime_error when the
-// backend cannot run here (e.g. no OpenGL 4.5 context).
+// Throws std::invalid_argument for an unknown backend or `gpu` with a product it does
+// not have (message names the product and suggests reference/auto), std::runtime_error
+// when the backend cannot run here ("--backend gpu: no OpenGL 4.5 context could be created: …",
+// one line).
 shading::ProductBands compute_with_backend(const std::string& backend, const terrain::HeightField& field,
                                            shading::Product product, const shading::ProductOptions& options,
                                            const shading::ProgressCallback& progress);

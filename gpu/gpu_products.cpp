@@ -53,22 +53,6 @@ GlslDefines horizon_defines(const GpuHorizonOptions& o) {
   return d;
 }
 
-// Same naming as the CPU reference's horizon bands (checked by gpu_horizon_test).
-std::string horizon_band_name(int k, int w) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / w);
-  return buf;
-}
-
-void check_storage_size(std::size_t bytes, const char* what) {
-  GLint64 max_block = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-  if (bytes > static_cast<std::size_t>(max_block))
-    throw std::runtime_error(std::string("GpuExactHorizon: ") + what + " needs " +
-                             std::to_string(bytes) + " bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
-                             std::to_string(max_block) + "; split the field into tiles");
-}
-
 // horizon_ray.glsl's uniforms; a kernel variant may not use all of them (grid_dy is
 // dropped by horizon_products.comp without curvature).
 void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
@@ -85,19 +69,30 @@ struct GpuExactHorizon::Kernels {
   Buffer headings;
 };
 
-shading::Heading band_heading(int k, int azimuths) {
-  shading::Heading u = shading::heading_from_geographic(shading::band_azimuth(k, azimuths));
-  // sin/cos leave ~1e−16 where the exact value is 0 (N, E, S, W); that residue would
-  // push rays along the grid's edge rows/columns off the grid at the first step.
-  constexpr double kSnap = 1e-12;
-  if (std::abs(u.east) < kSnap) u.east = 0.0;
-  if (std::abs(u.north) < kSnap) u.north = 0.0;
-  return u;
+std::string horizon_band_name(int k, int w) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / w);
+  return buf;
 }
 
-double edge_epsilon_texels(const terrain::HeightField& field) {
-  // A few float ulps of the largest texel coordinate, plus a floor for tiny grids.
-  return 1e-6 * std::max(field.width, field.height) + 1e-5;
+void check_storage_size(std::size_t bytes, const char* what) {
+  GLint64 max_block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  if (bytes > static_cast<std::size_t>(max_block))
+    throw std::runtime_error(std::string(what) + " needs " + std::to_string(bytes) +
+                             " bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE " + std::to_string(max_block) +
+                             "; split the field into tiles");
+}
+
+std::vector<std::uint32_t> pack_valid_bytes(const terrain::HeightField& field) {
+  std::vector<std::uint32_t> words((field.size() + 3) / 4, 0);
+  for (std::size_t t = 0; t < field.size(); ++t)
+    if (field.valid[t]) words[t / 4] |= 1u << (8 * (t % 4));
+  return words;
+}
+
+shading::Heading band_heading(int k, int azimuths) {
+  return shading::heading_from_geographic(shading::band_azimuth(k, azimuths));
 }
 
 GpuHorizonOptions exact_options_for(shading::Product product, const shading::ProductOptions& options) {
@@ -136,12 +131,10 @@ GpuHorizonProducts GpuExactHorizon::compute(const terrain::HeightField& field) c
   const auto start = std::chrono::steady_clock::now();
   const int w = field.width, h = field.height, bands = mOptions.azimuths;
   const std::size_t texels = field.size();
-  check_storage_size(texels * sizeof(float) * bands, "the horizon bands");
+  check_storage_size(texels * sizeof(float) * bands, "GpuExactHorizon: the horizon bands");
 
   const std::vector<float> row_dx(field.dx_per_row.begin(), field.dx_per_row.end());
-  std::vector<std::uint32_t> valid_words((texels + 3) / 4, 0);
-  for (std::size_t t = 0; t < texels; ++t)
-    if (field.valid[t]) valid_words[t / 4] |= 1u << (8 * (t % 4));
+  const std::vector<std::uint32_t> valid_words = pack_valid_bytes(field);
 
   Buffer heights = Buffer::from(std::span<const float>(field.heights));
   Buffer dx = Buffer::from(std::span<const float>(row_dx));
@@ -164,7 +157,9 @@ GpuHorizonProducts GpuExactHorizon::compute(const terrain::HeightField& field) c
   const ComputeProgram& march = mKernels->march;
   set_grid_uniforms(march, field);
   march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
-  march.set_uniform("edge_eps", static_cast<float>(edge_epsilon_texels(field)));
+  march.set_uniform("edge_eps", static_cast<float>(shading::edge_epsilon_texels(field)));
+  march.set_uniform("row_offset", 0);  // one dispatch: the sigma buffer holds every row
+  march.set_uniform("chunk_rows", h);
   const ComputeProgram& products = mKernels->products;
   set_grid_uniforms(products, field);
 

@@ -3,13 +3,15 @@
 // (per texel), and reads back the `horizon` and `svf` products (DESIGN.md "Products"),
 // laid out like the CPU reference's shading::compute_product with `exact` set.
 //
-// Semantics are those of shading::exact_max_elevation (horizon_exact.h) with two
-// robustness fixes the CPU reference lacks (as of this writing): cardinal headings
-// have exact zero components (band_heading), and samples on the grid's edge count
-// (edge_epsilon_texels). Elsewhere the two agree to float32 rounding.
+// Semantics are those of shading::exact_max_elevation (horizon_exact.h), edge rules
+// included (shading/horizon_ray.h); the two agree to float32 rounding.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "shading/horizon_exact.h"
 #include "shading/products.h"
@@ -22,16 +24,18 @@ struct GpuHorizonOptions {
   shading::ExactMarch march;    // step (texels), max distance (0 = DEM extent), curvature
 };
 
-// Horizontal direction (east, north) of band k of W: shading::heading_from_geographic
-// with components below 1e−12 set to exactly 0, so cardinal rays along the grid's edge
-// rows and columns stay on the grid.
+// Helpers shared with gpu_pipeline.cpp.
+// Band name of the CPU reference's horizon product ("horizon_az045.0").
+std::string horizon_band_name(int k, int azimuths);
+// Throws std::runtime_error("<what> needs … bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE …")
+// (needs a current context).
+void check_storage_size(std::size_t bytes, const char* what);
+// field.valid packed 1 byte per texel, four per word, little end first (the shaders'
+// `valid_bytes`).
+std::vector<std::uint32_t> pack_valid_bytes(const terrain::HeightField& field);
+// Horizontal direction (east, north) of band k of W (shading/azimuth.h; cardinal
+// components are exact zeros, so rays along the grid's edges stay on it).
 shading::Heading band_heading(int k, int azimuths);
-
-// The march treats samples within this many texels outside the grid as on its edge
-// (and clamps them): a half-texel step lands the ray's dominant axis exactly on the
-// last row or column, and float or double rounding must not decide whether that
-// sample counts.
-double edge_epsilon_texels(const terrain::HeightField& field);
 
 // The options compute_product(field, product, options) uses for its exact march:
 // W = march.azimuths for `horizon`, exact_options.sky_azimuths for `svf`.

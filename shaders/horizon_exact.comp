@@ -12,16 +12,20 @@ layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 
 
 // Heading (east, north) of each band, computed by C++ (shading/azimuth.h).
 layout(std430, binding = HEADINGS_BINDING) readonly buffer Headings { vec2 headings[]; };
-// Raw horizon elevation (rad) per band, texel: [(k*H + j)*W + i]; -inf: no step on grid.
+// Raw horizon elevation (rad) per band and texel of the row chunk:
+// [(k*chunk_rows + j - row_offset)*W + i]; -inf: no step on grid.
 layout(std430, binding = SIGMA_BINDING) writeonly buffer Sigma { float sigma[]; };
 
 uniform float max_distance;  // m, with a float-rounding slack added by the host
+uniform int row_offset;      // first row of this dispatch
+uniform int chunk_rows;      // rows of the sigma buffer
 
 void main() {
   int i = int(gl_GlobalInvocationID.x);
-  int j = int(gl_GlobalInvocationID.y);
+  int j = int(gl_GlobalInvocationID.y) + row_offset;
   int k = int(gl_GlobalInvocationID.z);
-  if (i >= grid_width || j >= grid_height || k >= AZIMUTHS) return;
+  // Work groups overhang the chunk: rows past it belong to the next one.
+  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows || k >= AZIMUTHS) return;
 
   vec2 u = headings[k];
   float h0 = heightAt(i, j);
@@ -38,6 +42,6 @@ void main() {
     best_slope = any ? max(best_slope, slope) : slope;
     any = true;
   }
-  sigma[(k * grid_height + j) * grid_width + i] =
+  sigma[(k * chunk_rows + j - row_offset) * grid_width + i] =
       any ? atan(best_slope) : uintBitsToFloat(0xff800000u);
 }

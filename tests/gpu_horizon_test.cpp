@@ -74,7 +74,7 @@ HeightField synthetic_field(int w, int h, double dx, double dy) {
 // GPU's edge epsilon), plain max of elevation angles; −∞ if there is no sample.
 double reference_max_elevation(const HeightField& f, int i, int j, shading::Heading u,
                                const shading::ExactMarch& m) {
-  const double eps = edge_epsilon_texels(f);
+  const double eps = shading::edge_epsilon_texels(f);
   const double per_m = std::max(std::abs(u.east) / f.dx(j), std::abs(u.north) / f.dy);
   const double step = m.step_texels / per_m;
   const double d_max = m.max_distance_m > 0 ? m.max_distance_m : std::hypot(f.width * f.mean_dx(), f.height * f.dy);

@@ -1,0 +1,354 @@
+#include "gpu/gpu_pipeline.h"
+
+#include "shading/horizon_ray.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gpu/buffers.h"
+#include "gpu/compute_program.h"
+#include "gpu/gl_context.h"
+#include "gpu/gpu_products.h"
+#include "gpu/timer.h"
+#include "shading/azimuth.h"
+#include "shading/horizon_march.h"
+#include "shading/nlp.h"
+#include "shading/shading_modes.h"
+#include "shading/wedge.h"
+#include "terrain/pyramid.h"
+
+namespace skylit::gpu {
+namespace {
+
+using shading::Product;
+
+// Storage-buffer binding points, handed to the shaders as generated #defines.
+enum Binding : int {
+  kHeights = 0,
+  kRowDx = 1,
+  kHeadings = 2,
+  kSigma = 3,
+  kValid = 4,
+  kOutput = 5,
+  kSchedule = 6,
+  kLevels = 7,
+  kCoeffs = 8,
+  kWedge = 9,
+  kRotation = 10,
+  kTable = 11,
+};
+
+constexpr int kLocalSize = 8;  // 8×8 texels per work group
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Bands of the raw horizons a product needs, as compute_product chooses them.
+int horizon_bands(Product product, const shading::ProductOptions& o) {
+  if (product == Product::Horizon) return o.march.azimuths;
+  return o.exact ? o.exact_options.sky_azimuths : o.march.azimuths;
+}
+
+// Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
+// the wedge operator's math-frame samples φ_j = j·2π/W for shaded. Snapped (see
+// shading/azimuth.h) so cardinal rays along the grid's edges stay on it.
+std::vector<float> band_headings(Product product, int w) {
+  std::vector<float> out;
+  for (int k = 0; k < w; ++k) {
+    const shading::Heading u = product == Product::Shaded
+                                   ? shading::heading_from_math(shading::kTwoPi * k / w)
+                                   : band_heading(k, w);
+    out.push_back(static_cast<float>(u.east));
+    out.push_back(static_cast<float>(u.north));
+  }
+  return out;
+}
+
+double inv_two_r_eff(const shading::EarthCurvature& c) {
+  return c.enabled ? 1.0 / (2.0 * c.effective_radius()) : 0.0;
+}
+
+GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
+  GlslDefines d;
+  d.set("LOCAL_SIZE_X", kLocalSize)
+      .set("LOCAL_SIZE_Y", kLocalSize)
+      .set("AZIMUTHS", azimuths)
+      .set("INV_TWO_R_EFF", inv_two_r_eff(o.march.curvature))
+      .set("HEIGHTS_BINDING", kHeights)
+      .set("ROW_DX_BINDING", kRowDx)
+      .set("HEADINGS_BINDING", kHeadings)
+      .set("SIGMA_BINDING", kSigma);
+  return d;
+}
+
+std::string float_array_literal(const std::vector<double>& v) {
+  std::ostringstream s;
+  s << "float[" << v.size() << "](";
+  for (std::size_t k = 0; k < v.size(); ++k) s << (k ? ", " : "") << glsl_float_literal(v[k]);
+  s << ")";
+  return s.str();
+}
+
+void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
+  p.set_uniform("grid_width", f.width);
+  p.set_uniform("grid_height", f.height);
+  if (p.has_uniform("grid_dy")) p.set_uniform("grid_dy", static_cast<float>(f.dy));
+  if (p.has_uniform("edge_eps")) p.set_uniform("edge_eps", static_cast<float>(shading::edge_epsilon_texels(f)));
+}
+
+// compute_product's argument checks, before any kernel is built.
+void validate_options(Product product, const shading::ProductOptions& o) {
+  if (!gpu_supports(product, o))
+    throw std::invalid_argument("the GPU pipeline cannot compute '" + std::string(shading::product_name(product)) +
+                                "' with a sun or sky model yet");
+  shading::validate(o.march);
+  if (o.exact && !(o.exact_options.step_texels > 0.0)) throw std::invalid_argument("exact: step must be > 0");
+  if (horizon_bands(product, o) < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
+  if (!(o.shaded.albedo >= 0.0) || !(o.shaded.exposure > 0.0))
+    throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+}
+
+}  // namespace
+
+bool gpu_supports(Product product, const shading::ProductOptions& options) {
+  const bool known = product == Product::Horizon || product == Product::Svf || product == Product::Skyview ||
+                     product == Product::Shaded;
+  return known && !shading::uses_lighting(product, options);
+}
+
+struct GpuProductPipeline::Impl {
+  int azimuths = 0;
+  std::optional<ComputeProgram> march;     // horizon_march.comp, or horizon_exact.comp with exact
+  std::optional<ComputeProgram> products;  // surface_products.comp
+  Buffer headings;
+  Buffer wedge, rotation, table;  // shaded only
+};
+
+GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOptions& options)
+    : mProduct(product), mOptions(options), mImpl(new Impl) {
+  validate_options(product, options);
+  Impl& k = *mImpl;
+  k.azimuths = horizon_bands(product, options);
+  const std::vector<float> headings = band_headings(product, k.azimuths);
+  k.headings = Buffer::from(std::span<const float>(headings));
+
+  // March kernel.
+  GlslDefines march = common_defines(k.azimuths, options);
+  if (options.exact) {
+    march.set("STEP_TEXELS", options.exact_options.step_texels);
+    k.march.emplace(ComputeProgram::from_embedded("horizon_exact.comp", march));
+  } else {
+    march.set("SMOOTH_MAX", options.march.smooth_max ? 1 : 0)
+        .set("USE_PYRAMID", options.march.use_pyramid ? 1 : 0)
+        .set("SCHEDULE_BINDING", kSchedule)
+        .set("LEVELS_BINDING", kLevels)
+        .set("COEFFS_BINDING", kCoeffs);
+    k.march.emplace(ComputeProgram::from_embedded("horizon_march.comp", march));
+  }
+
+  // Product kernel.
+  GlslDefines prod = common_defines(k.azimuths, options);
+  prod.set("PRODUCT_HORIZON", static_cast<int>(Product::Horizon))
+      .set("PRODUCT_SVF", static_cast<int>(Product::Svf))
+      .set("PRODUCT_SKYVIEW", static_cast<int>(Product::Skyview))
+      .set("PRODUCT_SHADED", static_cast<int>(Product::Shaded))
+      .set("PRODUCT", static_cast<int>(product))
+      .set("EXACT_MARCH", options.exact ? 1 : 0)
+      .set("PI", std::numbers::pi)
+      .set("HALF_PI", std::numbers::pi / 2)
+      .set("TWO_PI", shading::kTwoPi)
+      .set("VALID_BINDING", kValid)
+      .set("OUTPUT_BINDING", kOutput);
+  if (options.exact) prod.set("STEP_TEXELS", options.exact_options.step_texels);
+  if (product == Product::Shaded) {
+    const shading::ShadedOptions& s = options.shaded;
+    const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, sh::WedgeInterpolation::Linear);
+    // The reference's shading set-up, restated (reference_pipeline.cpp keeps it inside
+    // compute_product): default mode (sky × BRDF table), Lambert, uniform sky of
+    // radiance 1 above the horizontal. gpu_products_test fails if the two diverge.
+    shading::ShadingSettings settings;
+    settings.order = s.sh_order;
+    shading::SkyInput sky;
+    sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+    const shading::Shader shader(settings, sky);
+    const shading::SkyBrdfTable& table = *shader.table();
+
+    std::vector<double> occlusion_factors(s.nlp_order, 0.0);
+    for (int l = 1; l < s.nlp_order; ++l) occlusion_factors[l] = sh::nlp_norm(l) / (static_cast<double>(l) * (l + 1));
+    std::vector<float> rotation;
+    for (int j = 0; j < k.azimuths; ++j)
+      for (int m = 0; m < s.sh_order; ++m) {
+        rotation.push_back(static_cast<float>(std::cos(m * op.sample_azimuth(j))));
+        rotation.push_back(static_cast<float>(std::sin(m * op.sample_azimuth(j))));
+      }
+    prod.set("SH_ORDER", s.sh_order)
+        .set("SH_COEFFS", op.rows())
+        .set("NLP_ORDER", s.nlp_order)
+        .set("NLP_V0_SCALE", sh::nlp_norm(0))
+        .set_literal("NLP_OCCLUSION_FACTORS", float_array_literal(occlusion_factors))
+        .set("WEDGE_ROWS", op.rows())
+        .set("WEDGE_COLS", op.cols())
+        .set("TABLE_N_THETA", table.grid().n_theta)
+        .set("TABLE_N_PHI", table.grid().n_phi)
+        .set("TABLE_THETA_MAX", table.grid().theta_max)
+        .set("WEDGE_BINDING", kWedge)
+        .set("ROTATION_BINDING", kRotation)
+        .set("TABLE_BINDING", kTable);
+    k.wedge = Buffer::from(op.matrix_f32());
+    k.rotation = Buffer::from(std::span<const float>(rotation));
+    k.table = Buffer::from(table.texels());
+  }
+  k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
+}
+
+GpuProductPipeline::~GpuProductPipeline() = default;
+
+shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& field,
+                                                  const shading::ProgressCallback& progress,
+                                                  GpuPipelineTimings* timings) const {
+  if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
+  const auto start = Clock::now();
+  GpuPipelineTimings t;
+  const Impl& k = *mImpl;
+
+  const int w = field.width, h = field.height, bands = k.azimuths;
+  const int out_bands = mProduct == Product::Horizon ? bands : 1;
+  const std::size_t texels = field.size();
+
+  // Stage 1 (CPU): the marcher's step schedule and the height pyramid.
+  std::vector<float> schedule, coeffs;
+  std::vector<std::int32_t> levels;  // per level: ivec4 dims, vec4 scale (as bits)
+  double first_distance = 0.0;
+  if (!mOptions.exact) {
+    const shading::HorizonMarcher marcher(field, mOptions.march);
+    for (int s = 0; s < marcher.steps(); ++s) {
+      schedule.push_back(static_cast<float>(marcher.distance(s)));
+      schedule.push_back(static_cast<float>(marcher.level_of_step(s)));
+    }
+    first_distance = marcher.distance(0);
+    if (mOptions.march.use_pyramid) {
+      const terrain::HeightPyramid pyramid(field, terrain::PyramidOptions{.k_v = mOptions.march.k_v});
+      for (int l = 0; l < pyramid.levels(); ++l) {
+        const terrain::PyramidLevel& lv = pyramid.level(l);
+        const float scale[4] = {static_cast<float>(lv.step_x), static_cast<float>(lv.step_y), 0.0f, 0.0f};
+        const std::int32_t dims[4] = {lv.width, lv.height, static_cast<std::int32_t>(coeffs.size()), 0};
+        levels.insert(levels.end(), dims, dims + 4);
+        for (float f : scale) levels.push_back(std::bit_cast<std::int32_t>(f));
+        coeffs.insert(coeffs.end(), lv.coeffs.begin(), lv.coeffs.end());
+      }
+      check_storage_size(coeffs.size() * sizeof(float), "GPU pipeline: the height pyramid");
+    } else {  // unused by the kernel; GL wants non-empty buffers bound
+      coeffs.assign(1, 0.0f);
+      levels.assign(8, 0);
+    }
+  }
+  t.pyramid_ms = ms_since(start);
+
+  // Uploads.
+  const auto upload_start = Clock::now();
+  const std::vector<float> row_dx(field.dx_per_row.begin(), field.dx_per_row.end());
+  const std::vector<std::uint32_t> valid_words = pack_valid_bytes(field);
+  // Rows per chunk: march dispatches of ≤ mInvocationsPerDispatch invocations, and σ
+  // and output buffers of that size, however large the field.
+  const int chunk = static_cast<int>(
+      std::clamp<std::size_t>(mInvocationsPerDispatch / (static_cast<std::size_t>(w) * bands), 1, h));
+  const std::size_t sigma_bytes = static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
+  check_storage_size(sigma_bytes, "GPU pipeline: one row of horizon bands");
+  check_storage_size(texels * sizeof(float), "GPU pipeline: the heights");
+  Buffer heights = Buffer::from(std::span<const float>(field.heights));
+  Buffer dx = Buffer::from(std::span<const float>(row_dx));
+  Buffer valid = Buffer::from(std::span<const std::uint32_t>(valid_words));
+  Buffer sigma(sigma_bytes);
+  Buffer output(static_cast<std::size_t>(chunk) * w * out_bands * sizeof(float));
+  Buffer schedule_buf, levels_buf, coeffs_buf;
+  heights.bind_storage(kHeights);
+  dx.bind_storage(kRowDx);
+  k.headings.bind_storage(kHeadings);
+  sigma.bind_storage(kSigma);
+  valid.bind_storage(kValid);
+  output.bind_storage(kOutput);
+  if (!mOptions.exact) {
+    schedule_buf = Buffer::from(std::span<const float>(schedule));
+    levels_buf = Buffer::from(std::span<const std::int32_t>(levels));
+    coeffs_buf = Buffer::from(std::span<const float>(coeffs));
+    schedule_buf.bind_storage(kSchedule);
+    levels_buf.bind_storage(kLevels);
+    coeffs_buf.bind_storage(kCoeffs);
+  }
+  if (mProduct == Product::Shaded) {
+    k.wedge.bind_storage(kWedge);
+    k.rotation.bind_storage(kRotation);
+    k.table.bind_storage(kTable);
+  }
+  t.upload_ms = ms_since(upload_start);
+
+  // Stage 2: the march. Stage 3: the product. Row chunks bound a dispatch's length.
+  const ComputeProgram& march = *k.march;
+  set_grid_uniforms(march, field);
+  const ComputeProgram& products = *k.products;
+  set_grid_uniforms(products, field);
+  if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));
+
+  if (mOptions.exact) {  // D with a float-rounding slack, as GpuExactHorizon sets it
+    const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
+                                                             : shading::dem_extent(field);
+    march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
+  } else {
+    march.set_uniform("steps", static_cast<int>(schedule.size() / 2));
+  }
+
+  shading::ProductBands out{w, h, out_bands, std::vector<float>(texels * out_bands), {}};
+  std::vector<float> chunk_values;
+  GpuTimer march_timer, products_timer;
+  for (int r0 = 0; r0 < h; r0 += chunk) {
+    const int rows = std::min(chunk, h - r0);
+    for (const ComputeProgram* p : {&march, &products}) {
+      p->set_uniform("row_offset", r0);
+      p->set_uniform("chunk_rows", chunk);
+    }
+    {
+      ScopedGpuTimer timing(march_timer);
+      march.dispatch_covering(w, rows, bands);
+    }
+    t.march_ms += march_timer.elapsed_ms();
+    {
+      ScopedGpuTimer timing(products_timer);
+      products.dispatch_covering(w, rows);
+    }
+    t.products_ms += products_timer.elapsed_ms();
+    // Band-major chunk → band-major field.
+    chunk_values.resize(static_cast<std::size_t>(chunk) * w * out_bands);
+    output.download(chunk_values.data(), chunk_values.size() * sizeof(float));
+    for (int b = 0; b < out_bands; ++b)
+      std::copy_n(chunk_values.begin() + static_cast<std::ptrdiff_t>(b) * chunk * w, static_cast<std::size_t>(rows) * w,
+                  out.data.begin() + (static_cast<std::ptrdiff_t>(b) * h + r0) * w);
+    if (progress) progress(0.99 * (r0 + rows) / h);
+  }
+
+  // Stage 4: the output transfer.
+  throw_on_gl_error("GpuProductPipeline::compute");
+  if (mProduct == Product::Horizon)
+    for (int b = 0; b < bands; ++b) out.band_names.push_back(horizon_band_name(b, bands));
+  else
+    out.band_names.emplace_back(shading::product_name(mProduct));
+  if (mProduct == Product::Shaded)
+    for (float& v : out.data)
+      if (!std::isnan(v)) v = shading::srgb_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure);
+  if (progress) progress(1.0);
+  t.wall_ms = ms_since(start);
+  if (timings) *timings = t;
+  return out;
+}
+
+}  // namespace skylit::gpu

@@ -1,0 +1,77 @@
+// The products of `skylit shade` on the GPU (DESIGN.md pipeline steps 2–4, 7, 9):
+// horizon, svf, skyview and shaded, laid out and named like the CPU reference's
+// shading::compute_product with the same ProductOptions, which it matches to float32
+// rounding (tests/gpu_products_test.cpp).
+//
+// Stages (gpu/README.md "Product pipeline"):
+//  1. height pyramid: built on the CPU (terrain::HeightPyramid, the reference's own;
+//     HorizonMarcher, which supplies the step schedule, builds a second one it does
+//     not expose), its B-spline coefficients uploaded;
+//  2. shaders/horizon_march.comp: multi-resolution march per texel and azimuth with
+//     the CPU marcher's own step schedule (t_s, level l_s) → raw horizons;
+//     with options.exact, shaders/horizon_exact.comp (the dense exact march) instead;
+//  3. shaders/surface_products.comp: per texel, Horn normal and the product
+//     (horizon floors, svf, exact skyview slice integrals, or NLP slices → linear
+//     wedge assembly → sky×BRDF table shading);
+//  4. host: read-back; shaded gets albedo, exposure and shading::srgb_code_value.
+//
+// Edge rules (exact-zero cardinal headings, samples within edge_epsilon_texels of the
+// last row/column count) are the CPU reference's, from shading/horizon_ray.h.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "shading/products.h"
+#include "terrain/height_field.h"
+
+namespace skylit::gpu {
+
+// Whether the pipeline computes `product` with `options`: horizon, svf, skyview, and
+// shaded under the default uniform sky; not yet shadow, irradiance or a lit shaded
+// (ProductOptions::lighting: sun and sky models).
+bool gpu_supports(shading::Product product, const shading::ProductOptions& options);
+
+struct GpuPipelineTimings {
+  double pyramid_ms = 0.0;   // CPU: pyramid build, schedule
+  double upload_ms = 0.0;    // buffers to the GPU
+  double march_ms = 0.0;     // GPU timer (Mesa llvmpipe reports ~0 for compute)
+  double products_ms = 0.0;  // GPU timer
+  double wall_ms = 0.0;      // whole compute(), read-back included
+};
+
+// Compiles the kernels for one product and set of options; compute() may then run on
+// any number of fields. Needs a current GL 4.5 context (gpu/gl_context.h) for its whole
+// life. The shading table (uniform sky of radiance 1 above the horizontal, Lambert,
+// the reference's default shading mode) is built once here.
+class GpuProductPipeline {
+ public:
+  // Throws std::invalid_argument for options compute_product rejects or
+  // !gpu_supports(product, options), and std::runtime_error if a kernel fails to compile.
+  GpuProductPipeline(shading::Product product, const shading::ProductOptions& options);
+  ~GpuProductPipeline();
+  GpuProductPipeline(const GpuProductPipeline&) = delete;
+  GpuProductPipeline& operator=(const GpuProductPipeline&) = delete;
+
+  shading::Product product() const { return mProduct; }
+  // Bound on march invocations (texels × azimuths) per dispatch: fields are processed in
+  // row chunks of that size, which bounds a dispatch's run time (progress, watchdogs)
+  // and the σ and output buffers (16 MiB each at the default), however large the field.
+  void set_invocations_per_dispatch(std::size_t n) { mInvocationsPerDispatch = n; }
+  const shading::ProductOptions& options() const { return mOptions; }
+
+  // Nodata texels are NaN. Throws std::runtime_error if the field exceeds the GPU's
+  // storage-buffer limits (split it into tiles with a halo). `progress` is called with
+  // the fraction of rows done, from the calling thread.
+  shading::ProductBands compute(const terrain::HeightField& field, const shading::ProgressCallback& progress = {},
+                                GpuPipelineTimings* timings = nullptr) const;
+
+ private:
+  struct Impl;
+  shading::Product mProduct;
+  shading::ProductOptions mOptions;
+  std::unique_ptr<Impl> mImpl;
+  std::size_t mInvocationsPerDispatch = std::size_t{1} << 22;
+};
+
+}  // namespace skylit::gpu

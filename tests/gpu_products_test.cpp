@@ -1,0 +1,316 @@
+// The GPU product pipeline (gpu::GpuProductPipeline: shaders/horizon_march.comp,
+// shaders/surface_products.comp) against the CPU reference shading::compute_product
+// with the same ProductOptions, for every product (horizon, svf, skyview, shaded), on a
+// synthetic field and on a real DEM crop (shared/dem, skipped if missing).
+//
+// Tolerances (float32 GPU vs double CPU):
+//  * horizon ≤ 0.05°: the GPU samples float B-spline coefficients with float weights
+//    and float positions; heights of ~2 km carry ~1e-4 m of rounding, positions ~1e-5
+//    texel times slopes ≤ ~3, over the shortest lever (t_0 ≈ one texel ≥ 20 m):
+//    ≤ ~1e-5 rad ≈ 6e-4°. The smooth max and atan add rounding of the same order.
+//    Observed max ≈ 1.1e-3° (printed below); 0.05° leaves room for other drivers'
+//    atan and fused multiply-adds.
+//  * svf ≤ 2e-3, skyview ≤ 2e-3: both are means over azimuths of terms whose
+//    derivative in σ is ≤ 1 (svf) or ≤ 1/π·2π/W·W = 2 (skyview), so |Δ| ≤ 2·|Δσ|
+//    ≈ 7e-5 from the horizon bound above; the Horn normal in float (differences
+//    against the centre height) adds ~1e-6. Observed ≤ 1.6e-6.
+//  * shaded ≤ 1 code value on ≥ 99% of texels (and ≤ 2 on all): V·T in float differs
+//    from double by ~1e-5 relative (16 SH coefficients summed from 2W wedge terms),
+//    i.e. ≤ ~0.005 code values, so only texels within that of a rounding boundary of
+//    the 8-bit code move, and by one. Observed: identical codes on every texel.
+// Every texel is compared, edges included: both paths snap cardinal headings to exact
+// zeros and count samples within shading::edge_epsilon_texels of the last row/column.
+// Runs on Mesa llvmpipe where there is no GPU.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "gpu/gl_context.h"
+#include "gpu/gpu_pipeline.h"
+#include "shading/products.h"
+#include "terrain/dem_reader.h"
+#include "terrain/synthetic.h"
+
+namespace skylit::gpu {
+namespace {
+
+using shading::Product;
+using shading::ProductBands;
+using shading::ProductOptions;
+using terrain::HeightField;
+
+constexpr double kHorizonTolDeg = 0.05;
+constexpr double kSvfTol = 2e-3;
+constexpr double kSkyviewTol = 2e-3;
+constexpr double kShadedTolCodes = 1.0;
+constexpr double kShadedMinFraction = 0.99;
+constexpr double kShadedMaxCodes = 2.0;
+
+class GpuProductsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    try {
+      context = std::make_unique<HeadlessContext>();
+    } catch (const std::exception& e) {
+      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
+    }
+  }
+  std::unique_ptr<HeadlessContext> context;
+};
+
+// Seeded synthetic mountains (ridges and a valley) on a non-square grid, with a
+// nodata texel.
+HeightField synthetic_field() {
+  terrain::SyntheticOptions o;
+  o.width = 100;
+  o.height = 88;
+  o.spacing = 30.0;
+  o.seed = 7;
+  o.feature_size = 2500.0;
+  o.relief = 1400.0;
+  HeightField f = terrain::make_synthetic_terrain(o);
+  f.valid[static_cast<std::size_t>(40) * f.width + 50] = 0;
+  return f;
+}
+
+// A 104 × 88 crop of the Cascades SRTM 1″ DEM (geographic: per-row dx ≈ 21 m, dy ≈ 31 m).
+bool real_dem(HeightField& out) {
+  const std::string path = std::string(SKYLIT_SHARED_DIR) + "/dem/cascades_skykomish_srtm1_4326.tif";
+  if (!std::filesystem::exists(path)) return false;
+  terrain::DemReadOptions o;
+  o.window = terrain::PixelRect{300, 130, 104, 88};
+  out = terrain::read_dem(path, o).field;
+  return true;
+}
+
+struct Stats {
+  double max_abs = 0.0;
+  double within = 0.0;  // fraction of compared values with |Δ| ≤ tol
+  std::size_t compared = 0;
+  int nan_mismatches = 0;
+};
+
+// |gpu − cpu| over texels at least `margin` inside the grid (default: all), all bands.
+Stats compare(const ProductBands& gpu, const ProductBands& cpu, double tol, int margin = 0) {
+  Stats s;
+  EXPECT_EQ(gpu.width, cpu.width);
+  EXPECT_EQ(gpu.height, cpu.height);
+  EXPECT_EQ(gpu.bands, cpu.bands);
+  EXPECT_EQ(gpu.band_names, cpu.band_names);
+  if (gpu.data.size() != cpu.data.size()) {
+    ADD_FAILURE() << "sizes differ";
+    return s;
+  }
+  std::size_t ok = 0;
+  for (int b = 0; b < gpu.bands; ++b)
+    for (int j = margin; j < gpu.height - margin; ++j)
+      for (int i = margin; i < gpu.width - margin; ++i) {
+        const float g = gpu.at(b, i, j), c = cpu.at(b, i, j);
+        if (std::isnan(g) || std::isnan(c)) {
+          s.nan_mismatches += std::isnan(g) != std::isnan(c);
+          continue;
+        }
+        const double d = std::abs(static_cast<double>(g) - c);
+        s.max_abs = std::max(s.max_abs, d);
+        ++s.compared;
+        ok += d <= tol;
+      }
+  s.within = s.compared ? static_cast<double>(ok) / s.compared : 1.0;
+  return s;
+}
+
+double tolerance(Product p) {
+  switch (p) {
+    case Product::Horizon: return kHorizonTolDeg;
+    case Product::Svf: return kSvfTol;
+    case Product::Skyview: return kSkyviewTol;
+    case Product::Shaded: return kShadedTolCodes;
+    default: return 0.0;
+  }
+}
+
+// Runs `pipeline` and compute_product with its options on `field`; returns the GPU bands.
+ProductBands expect_product_matches(const GpuProductPipeline& pipeline, const HeightField& field,
+                                    const std::string& label) {
+  const Product product = pipeline.product();
+  const ProductOptions& options = pipeline.options();
+  SCOPED_TRACE(label + " " + std::string(shading::product_name(product)));
+  GpuPipelineTimings timings;
+  const ProductBands gpu = pipeline.compute(field, {}, &timings);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ProductBands cpu = shading::compute_product(field, product, options);
+  const double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  const double tol = tolerance(product);
+  const Stats s = compare(gpu, cpu, tol);
+  std::cout << "[ " << label << " ] " << shading::product_name(product) << " " << field.width << "x" << field.height
+            << " W=" << (product == Product::Horizon ? options.march.azimuths : options.exact ? options.exact_options.sky_azimuths : options.march.azimuths)
+            << (options.exact ? " exact" : "") << ": max |d| " << s.max_abs << ", within " << tol << ": "
+            << 100.0 * s.within << "% of " << s.compared << "; GPU wall " << timings.wall_ms << " ms (pyramid "
+            << timings.pyramid_ms << " ms), CPU " << cpu_ms << " ms\n";
+  EXPECT_EQ(s.nan_mismatches, 0);
+  EXPECT_GT(s.compared, 0u);
+  if (product == Product::Shaded) {
+    EXPECT_GE(s.within, kShadedMinFraction);
+    EXPECT_LE(s.max_abs, kShadedMaxCodes);
+  } else {
+    EXPECT_LE(s.max_abs, tol);
+  }
+  return gpu;
+}
+
+void expect_product_matches(const HeightField& field, Product product, const ProductOptions& options,
+                            const std::string& label) {
+  expect_product_matches(GpuProductPipeline(product, options), field, label);
+}
+
+ProductOptions default_options() {
+  ProductOptions o;
+  o.march.azimuths = 16;  // W = 32 doubles the run time and tests nothing more
+  return o;
+}
+
+// Each pipeline is compiled once and run on both fields (Mesa's compile of the shaded
+// kernel is the slowest step on llvmpipe).
+TEST_F(GpuProductsTest, AllProductsMatchReferenceOnSyntheticAndRealDem) {
+  const HeightField synthetic = synthetic_field();
+  HeightField dem;
+  const bool have_dem = real_dem(dem);
+  const ProductOptions o = default_options();
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded}) {
+    const GpuProductPipeline pipeline(p, o);
+    const ProductBands gpu = expect_product_matches(pipeline, synthetic, "synthetic");
+    EXPECT_TRUE(std::isnan(gpu.at(0, 50, 40))) << "nodata texel, " << shading::product_name(p);
+    EXPECT_FALSE(std::isnan(gpu.at(0, 51, 40))) << shading::product_name(p);
+    if (have_dem) expect_product_matches(pipeline, dem, "cascades crop");
+  }
+  if (!have_dem) std::cout << "shared/dem/cascades_skykomish_srtm1_4326.tif missing: real DEM not compared\n";
+}
+
+// The march's other settings: plain max, no pyramid (bilinear level 0), no curvature,
+// a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
+// albedo and exposure.
+TEST_F(GpuProductsTest, MarchAndShadingVariants) {
+  terrain::SyntheticOptions so;
+  so.width = 72;
+  so.height = 64;
+  so.seed = 11;
+  const HeightField field = terrain::make_synthetic_terrain(so);
+  ProductOptions o = default_options();
+  o.march.smooth_max = false;
+  o.march.curvature.enabled = false;
+  o.march.k_v = 2;
+  expect_product_matches(field, Product::Horizon, o, "plain max, k_v 2, flat Earth");
+  o = default_options();
+  o.march.use_pyramid = false;
+  o.march.max_distance_m = 1000.0;  // not 900 m: see the header comment
+  expect_product_matches(field, Product::Skyview, o, "no pyramid, D 1000 m");
+  o = default_options();
+  o.march.azimuths = 12;
+  o.shaded.sh_order = 3;
+  o.shaded.nlp_order = 6;
+  o.shaded.albedo = 0.8;
+  o.shaded.exposure = 1.7;
+  expect_product_matches(field, Product::Shaded, o, "n 3, N 6, albedo, exposure");
+}
+
+// Row chunks (forced small here): every chunk's σ and output land in the right rows
+// and bands, and progress reaches 1.
+TEST_F(GpuProductsTest, RowChunksMatchOneDispatch) {
+  const HeightField field = synthetic_field();
+  for (Product p : {Product::Horizon, Product::Skyview}) {
+    GpuProductPipeline pipeline(p, default_options());
+    const ProductBands whole = pipeline.compute(field);
+    pipeline.set_invocations_per_dispatch(static_cast<std::size_t>(field.width) * 16 * 7);  // 7 rows, last chunk 4
+    double last = 0.0;
+    int calls = 0;
+    const ProductBands chunked = pipeline.compute(field, [&](double f) {
+      EXPECT_GE(f, last);
+      last = f;
+      ++calls;
+    });
+    EXPECT_EQ(last, 1.0);
+    EXPECT_GE(calls, 14);
+    ASSERT_EQ(whole.data.size(), chunked.data.size());
+    for (std::size_t t = 0; t < whole.data.size(); ++t) {
+      if (std::isnan(whole.data[t]) && std::isnan(chunked.data[t])) continue;
+      ASSERT_EQ(whole.data[t], chunked.data[t]) << shading::product_name(p) << " value " << t;
+    }
+  }
+}
+
+// options.exact: the dense exact march (shaders/horizon_exact.comp) feeds the same
+// product kernel. Max distance 200 m (≤ 7 texels) with a margin of 8 texels keeps every
+// sample inside the grid, where the CPU exact march and the GPU share every sample.
+TEST_F(GpuProductsTest, ExactMarchProducts) {
+  terrain::SyntheticOptions so;
+  so.width = 40;
+  so.height = 34;
+  so.seed = 5;
+  const HeightField field = terrain::make_synthetic_terrain(so);
+  ProductOptions o;
+  o.exact = true;
+  o.march.azimuths = 8;
+  o.march.max_distance_m = 200.0;
+  o.exact_options.sky_azimuths = 16;
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded}) {
+    SCOPED_TRACE(std::string(shading::product_name(p)));
+    const ProductBands gpu = GpuProductPipeline(p, o).compute(field);
+    const ProductBands cpu = shading::compute_product(field, p, o);
+    const Stats s = compare(gpu, cpu, tolerance(p), 8);
+    std::cout << "[ exact ] " << shading::product_name(p) << ": max |d| " << s.max_abs << ", within: "
+              << 100.0 * s.within << "% of " << s.compared << "\n";
+    EXPECT_EQ(s.nan_mismatches, 0);
+    if (p == Product::Shaded) {
+      EXPECT_GE(s.within, kShadedMinFraction);
+      EXPECT_LE(s.max_abs, kShadedMaxCodes);
+    } else {
+      EXPECT_LE(s.max_abs, tolerance(p));
+    }
+  }
+}
+
+// Closed forms, independent of the CPU reference: open flat ground has skyview 1 and
+// svf 1; a tilted open plane (no curvature, slope s) has skyview (1 + cos s)/2.
+TEST_F(GpuProductsTest, OpenPlanesMatchClosedForms) {
+  HeightField flat(40, 36, 25.0);
+  ProductOptions o = default_options();
+  o.march.curvature.enabled = false;
+  const ProductBands sky = GpuProductPipeline(Product::Skyview, o).compute(flat);
+  for (float v : sky.data) ASSERT_NEAR(v, 1.0, 1e-5);
+  const ProductBands svf = GpuProductPipeline(Product::Svf, o).compute(flat);
+  for (float v : svf.data) ASSERT_EQ(v, 1.0f);
+
+  HeightField tilted(40, 36, 25.0);
+  const double slope = 0.3;  // rise per run, toward the east
+  for (int j = 0; j < tilted.height; ++j)
+    for (int i = 0; i < tilted.width; ++i) tilted.at(i, j) = static_cast<float>(100.0 + slope * 25.0 * i);
+  const ProductBands t = GpuProductPipeline(Product::Skyview, o).compute(tilted);
+  // The uphill half of the sky is cut by the plane itself (σ = atan(slope·cos)), which
+  // the tangent plane hides anyway: skyview is the open tilted plane's (1 + cos s)/2.
+  const double expected = (1.0 + std::cos(std::atan(slope))) / 2.0;
+  for (int j = 2; j < tilted.height - 2; j += 5)
+    for (int i = 2; i < tilted.width - 2; i += 5) ASSERT_NEAR(t.at(0, i, j), expected, 2e-3) << i << "," << j;
+}
+
+TEST_F(GpuProductsTest, RejectsBadOptionsAndLitProducts) {
+  EXPECT_FALSE(gpu_supports(Product::Shadow, ProductOptions{}));
+  EXPECT_FALSE(gpu_supports(Product::Irradiance, ProductOptions{}));
+  EXPECT_TRUE(gpu_supports(Product::Shaded, ProductOptions{}));
+  EXPECT_THROW(GpuProductPipeline(Product::Shadow, ProductOptions{}), std::invalid_argument);
+  ProductOptions o;
+  o.march.azimuths = 0;
+  EXPECT_THROW(GpuProductPipeline(Product::Skyview, o), std::invalid_argument);
+  o = ProductOptions{};
+  o.shaded.exposure = 0.0;
+  EXPECT_THROW(GpuProductPipeline(Product::Shaded, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace skylit::gpu

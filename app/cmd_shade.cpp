@@ -1,13 +1,16 @@
 // `skylit shade INPUT... -o OUTPUT`: the DEM hillshade/export tool. Reads DEMs
-// (or the built-in synthetic scene), computes one product with the CPU reference
-// pipeline, and writes it georeferenced — atomically, so a failed run leaves no file.
+// (or the built-in synthetic scene), computes one product, and writes it
+// georeferenced — atomically, so a failed run leaves no file. Lighting (time, place,
+// sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/backend.h"
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/shade_output.h"
 
+#include "shading/lighting.h"
 #include "shading/products.h"
 #include "terrain/dem_reader.h"
+#include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
 
 #include <filesystem>
@@ -38,7 +41,23 @@ struct ShadeArgs {
   bool quiet = false;
   bool overwrite = false;
   bool compute_edges = true;
+  shading::LightingRequest lighting;
+  bool no_sun = false;
 };
+
+// The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
+// white) is what --no-sun gives when nothing else about the light is asked for.
+bool sky_only_default(const ShadeArgs& a) {
+  const auto& l = a.lighting;
+  return a.no_sun && l.time.empty() && !l.sun_azimuth_deg && !l.sun_elevation_deg && l.sky == "uniform";
+}
+
+// The DEM's centre (WGS 84) and height there, for the sun's position.
+std::optional<sun::Observer> dem_place(const terrain::HeightField& f) {
+  const auto at = terrain::grid_centre_lat_lon(f.georef, f.width, f.height);
+  if (!at) return std::nullopt;
+  return sun::Observer{at->latitude_deg, at->longitude_deg, f.at(f.width / 2, f.height / 2)};
+}
 
 terrain::HeightField load_input(const ShadeArgs& a) {
   if (a.synthetic) {
@@ -62,14 +81,24 @@ terrain::HeightField load_input(const ShadeArgs& a) {
 
 int run_shade(const ShadeArgs& a) {
   const auto product = shading::parse_product(a.product);
-  if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (horizon, svf, skyview, shaded)");
+  if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() + ")");
   OutputSpec out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
+  const bool lit = *product == shading::Product::Shadow || *product == shading::Product::Irradiance ||
+                   (*product == shading::Product::Shaded && !sky_only_default(a));
+  shading::LightingRequest request = a.lighting;
+  request.sun = !a.no_sun;
+  if (lit) shading::validate(request);  // before reading the DEM
 
   const terrain::HeightField field = load_input(a);
 
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
+  if (lit) {
+    const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
+    opt.lighting = resolved.lighting;
+    if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
+  }
 
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
   const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); });
@@ -84,14 +113,15 @@ int run_shade(const ShadeArgs& a) {
 
 void add_shade_command(CLI::App& root, Action& run) {
   auto args = std::make_shared<ShadeArgs>();
-  auto* cmd = root.add_subcommand("shade", "Shade a DEM: horizon, svf, skyview or shaded relief, georeferenced");
+  auto* cmd = root.add_subcommand(
+      "shade", "Shade a DEM: horizon, svf, skyview, shaded relief, sun shadow or irradiance, georeferenced");
   cmd->add_option("INPUT", args->inputs, "DEM raster(s) or a directory of tiles (mosaicked)");
   cmd->add_option("-o,--output", args->output, "Output raster (.tif, .png)")->required();
   cmd->add_flag("--synthetic", args->synthetic, "Use the built-in synthetic mountain scene instead of INPUT");
   cmd->add_option("--seed", args->seed, "Seed of the synthetic scene")->capture_default_str();
   cmd->add_option("--size", args->size, "Width and height of the synthetic scene (pixels)")
       ->check(CLI::Range(2, 16384))->capture_default_str();
-  cmd->add_option("-p,--product", args->product, "horizon | svf | skyview | shaded")->capture_default_str();
+  cmd->add_option("-p,--product", args->product, "horizon | svf | skyview | shaded | shadow | irradiance")->capture_default_str();
   cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
   cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
   cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
@@ -108,6 +138,24 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
   cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
   cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  auto& l = args->lighting;
+  cmd->add_option("--time", l.time,
+                  "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "
+                  "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon)");
+  cmd->add_option("--lat", l.latitude_deg, "Latitude for --time, degrees north (default: the DEM's centre)");
+  cmd->add_option("--lon", l.longitude_deg, "Longitude for --time, degrees east (default: the DEM's centre)");
+  cmd->add_option("--sun-azimuth,--azimuth", l.sun_azimuth_deg,
+                  "Sun azimuth, degrees from north clockwise (gdaldem -az; default 315 without --time)");
+  cmd->add_option("--sun-elevation,--altitude", l.sun_elevation_deg,
+                  "Sun elevation above the horizon, degrees (gdaldem -alt; default 45 without --time)");
+  cmd->add_option("--sky", l.sky, "Sky: uniform | preetham | cie:<1..16> | an equirectangular .hdr/.exr map")
+      ->capture_default_str();
+  cmd->add_option("--turbidity", l.turbidity, "Clear-sky turbidity (sun DNI, sky level), 1.7..10")->capture_default_str();
+  cmd->add_option("--sky-scale", l.sky_scale, "Multiplier of .hdr/.exr sky pixel values (to W m^-2 sr^-1)")
+      ->capture_default_str();
+  cmd->add_flag("--no-sun", args->no_sun,
+                "Sky light only; with nothing else about the light, the classic uniform-sky relief "
+                "(open flat ground white)");
   cmd->add_option("--backend", args->backend, "Compute backend: reference (CPU, double precision)")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");

@@ -7,10 +7,12 @@
 namespace skylit::app {
 
 std::vector<std::string> normalise_gdal_style_args(int argc, char** argv) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kMap{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kMap{{
       {"-of", "--of"},
       {"-co", "--co"},
       {"-compute_edges", "--compute-edges"},
+      {"-az", "--azimuth"},
+      {"-alt", "--altitude"},
   }};
   std::vector<std::string> out;
   out.reserve(argc);

@@ -14,14 +14,32 @@ std::string_view product_name(Product p) {
     case Product::Svf: return "svf";
     case Product::Skyview: return "skyview";
     case Product::Shaded: return "shaded";
+    case Product::Shadow: return "shadow";
+    case Product::Irradiance: return "irradiance";
   }
   return "unknown";
 }
 
+namespace {
+constexpr Product kProducts[] = {Product::Horizon, Product::Svf,    Product::Skyview,
+                                 Product::Shaded,  Product::Shadow, Product::Irradiance};
+}  // namespace
+
 std::optional<Product> parse_product(std::string_view name) {
-  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
+  for (Product p : kProducts)
     if (product_name(p) == name) return p;
   return std::nullopt;
+}
+
+std::string product_names() {
+  std::string out;
+  for (Product p : kProducts) out += (out.empty() ? "" : ", ") + std::string(product_name(p));
+  return out;
+}
+
+bool uses_lighting(Product product, const ProductOptions& options) {
+  return product == Product::Shadow || product == Product::Irradiance ||
+         (product == Product::Shaded && options.lighting.has_value());
 }
 
 double svf_from_horizon(const std::vector<double>& sigma) {

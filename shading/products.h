@@ -18,11 +18,21 @@
 //              visibility from the marched horizons (wedge assembly) shaded by the
 //              default sky×BRDF table of shading_modes, Lambert albedo; outgoing
 //              radiance → exposure → sRGB → 8-bit code values 1…255 as floats (0 is
-//              left for nodata, as gdaldem does).
+//              left for nodata, as gdaldem does). With ProductOptions::lighting the
+//              sky and sun of lighting.h instead: radiance albedo/π·(E_sky + E_sun) per
+//              channel (3 bands R, G, B when the lighting is colour), tone-mapped as
+//              lighting.h states.
+//  * shadow  : visible fraction of the solar disc (sun_light.h: the sun's own march, or
+//              the exact march with `exact`), 0…1. Needs lighting (its sun direction).
+//  * irradiance: W/m² on the surface, broadband (luminance of RGB):
+//              E_sky = ∫ L·V·max(n·ω, 0) dω = π·Σ_k V_k·T_k(n) (the SH visibility of
+//              `shaded` and a Lambert sky table of the lighting's sky), plus
+//              E_sun = DNI·max(n·s, 0)·shadow. Needs lighting. Clamped at 0.
 // Nodata texels are NaN in every band (the writer maps NaN to nodata).
 #pragma once
 
 #include "shading/horizon_march.h"
+#include "shading/lighting.h"
 #include "terrain/height_field.h"
 
 #include <functional>
@@ -33,11 +43,14 @@
 
 namespace skylit::shading {
 
-enum class Product { Horizon, Svf, Skyview, Shaded };
+// New products are appended: the GPU hands the enum's values to its shaders.
+enum class Product { Horizon, Svf, Skyview, Shaded, Shadow, Irradiance };
 
 std::string_view product_name(Product p);
-// "horizon", "svf", "skyview", "shaded"; nullopt otherwise.
+// "horizon", "svf", "skyview", "shaded", "shadow", "irradiance"; nullopt otherwise.
 std::optional<Product> parse_product(std::string_view name);
+// The names above joined by ", " (for messages).
+std::string product_names();
 
 struct ExactOptions {
   int sky_azimuths = 360;       // svf/skyview ground truth: azimuths of the sky integral
@@ -57,7 +70,14 @@ struct ProductOptions {
   ExactOptions exact_options;
   ShadedOptions shaded;
   unsigned threads = 0;         // worker threads over rows; 0 = hardware concurrency
+  // Sky + sun (lighting.h). Required by shadow and irradiance; for shaded it replaces
+  // the uniform sky of radiance 1 (the default, kept when empty).
+  std::optional<Lighting> lighting;
 };
+
+// True when `product` with `options` uses the lighting (sun shadows, sky tables of a
+// lit sky): shadow, irradiance, and shaded with options.lighting set.
+bool uses_lighting(Product product, const ProductOptions& options);
 
 // Float bands, band-major: value(b, i, j) = data[(b·height + j)·width + i].
 struct ProductBands {

@@ -2,6 +2,7 @@
 
 #include "shading/azimuth.h"
 #include "shading/shading_modes.h"
+#include "shading/sun_light.h"
 #include "shading/surface_normals.h"
 #include "shading/wedge.h"
 
@@ -73,6 +74,8 @@ double HorizonOracle::ground_floor(int j, Heading u) const {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// Share of the progress bar for the sun's pass in lit products (1 ray vs W).
+constexpr double kSunShare = 0.1;
 
 std::string horizon_band_name(int k, int w) {
   char buf[32];
@@ -92,6 +95,49 @@ std::vector<Heading> math_headings(int w) {
   return h;
 }
 
+// Sky tables and sun of a Lighting for `shaded` and `irradiance`: one Lambert
+// sky×cosine table (the default shading mode's grid) per output channel — R, G, B for a
+// colour `shaded`, else the broadband luminance.
+class LitShading {
+ public:
+  LitShading(const Lighting& l, bool rgb, int order) : sun_(l.sun.direction) {
+    const int channels = rgb ? 3 : 1;
+    const AxisGrid grid = table_grid_for(ShadingSettings{});
+    for (int c = 0; c < channels; ++c) {
+      dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+      if (!l.sky) continue;
+      const std::shared_ptr<const sky::SkyModel> s = l.sky;
+      const Radiance radiance = rgb ? Radiance([s, c](const glm::dvec3& d) { return s->radiance(d)[c]; })
+                                    : Radiance([s](const glm::dvec3& d) { return sky::luminance(s->radiance(d)); });
+      tables_.push_back(std::make_unique<SkyBrdfTable>(order, 1.0, radiance, grid));
+    }
+  }
+  int channels() const { return static_cast<int>(dni_.size()); }
+  // Irradiance of channel c (W/m²): π·V·T(n) (= ∫ L·V·max(n·ω, 0) dω) plus the sun.
+  double irradiance(int c, std::span<const double> vis, const glm::dvec3& n, double shadow) const {
+    const double sky = tables_.empty() ? 0.0 : std::numbers::pi * tables_[c]->shade(vis, n);
+    return std::max(sky + sun_irradiance(n, sun_, dni_[c], shadow), 0.0);
+  }
+
+ private:
+  glm::dvec3 sun_;
+  std::vector<double> dni_;
+  std::vector<std::unique_ptr<SkyBrdfTable>> tables_;
+};
+
+// The sun's march follows the products' options: curvature, distance, exact.
+SunShadowOptions sun_shadow_options(const ProductOptions& o) {
+  SunShadowOptions s;
+  s.threads = o.threads;
+  s.march.curvature = o.march.curvature;
+  s.march.max_distance_m = o.march.max_distance_m;
+  if (o.exact) {
+    s.horizon = SunHorizon::Exact;
+    s.exact = ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
+  }
+  return s;
+}
+
 }  // namespace
 
 ProductBands compute_product(const terrain::HeightField& field, Product product, const ProductOptions& options,
@@ -103,38 +149,74 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   if (w_sky < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
   if (!(options.shaded.albedo >= 0.0) || !(options.shaded.exposure > 0.0))
     throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+  const bool lit = uses_lighting(product, options);
+  if (lit && !options.lighting)
+    throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
+  if (lit) validate(*options.lighting);
+  const bool rgb = lit && product == Product::Shaded && options.lighting->colour;
 
   ProductBands out;
   out.width = field.width;
   out.height = field.height;
-  out.bands = product == Product::Horizon ? w_march : 1;
+  out.bands = product == Product::Horizon ? w_march : rgb ? 3 : 1;
   out.data.assign(static_cast<std::size_t>(out.bands) * field.size(), kNaN);
   if (product == Product::Horizon)
     for (int k = 0; k < w_march; ++k) out.band_names.push_back(horizon_band_name(k, w_march));
+  else if (rgb)
+    out.band_names = {"red", "green", "blue"};
   else
     out.band_names.emplace_back(product_name(product));
   auto put = [&](int b, int i, int j, double v) {
     out.data[(static_cast<std::size_t>(b) * field.height + j) * field.width + i] = static_cast<float>(v);
   };
 
-  // Shading set-up: wedge operator, and the default shading mode (sky × BRDF table,
-  // Lambert) under a uniform sky of radiance 1 above the horizontal.
+  // Sun: the visible disc fraction of every texel, in its own pass (its own march).
+  std::vector<float> shadow;
+  const bool sun_lit = lit && sky::luminance(options.lighting->sun.dni) > 0.0;
+  if (product == Product::Shadow || sun_lit) {
+    const glm::dvec3& s = options.lighting->sun.direction;
+    const bool alone = product == Product::Shadow;
+    shadow = shadow_fraction_field(field, {sky::azimuth_of(s), sky::elevation_of(s)}, sun_shadow_options(options),
+                                   [&](double f) {
+                                     if (progress) progress(alone ? f : kSunShare * f);
+                                   });
+    if (alone) {
+      std::copy(shadow.begin(), shadow.end(), out.data.begin());
+      return out;
+    }
+  }
+  const auto main_progress = [&](double f) {
+    if (progress) progress(shadow.empty() ? f : kSunShare + (1.0 - kSunShare) * f);
+  };
+
+  // Shading set-up: wedge operator, and either the default shading mode (sky × BRDF
+  // table, Lambert) under a uniform sky of radiance 1 above the horizontal, or the
+  // lighting's sky tables and sun.
+  const bool needs_visibility = product == Product::Shaded || product == Product::Irradiance;
   const sh::WedgeOperator* wedge = nullptr;
   std::unique_ptr<Shader> shader;
-  if (product == Product::Shaded) {
+  std::unique_ptr<LitShading> lighting;
+  if (needs_visibility) {
     const ShadedOptions& s = options.shaded;
     wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, sh::WedgeInterpolation::Linear);
-    ShadingSettings settings;
-    settings.order = s.sh_order;
-    SkyInput sky;
-    sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
-    shader = std::make_unique<Shader>(settings, sky);
+    if (lit) {
+      lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.sh_order);
+    } else {
+      ShadingSettings settings;
+      settings.order = s.sh_order;
+      SkyInput sky;
+      sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+      shader = std::make_unique<Shader>(settings, sky);
+    }
   }
+  // Tone map of the lit `shaded` (lighting.h): E → linear display value.
+  const double display_per_irradiance =
+      lit ? options.shaded.exposure * kShadedKey * options.shaded.albedo / options.lighting->reference_irradiance : 0.0;
 
   const std::vector<Heading> headings =
       product == Product::Horizon ? geographic_headings(w_march)
-      : product == Product::Shaded ? math_headings(w_sky)
-                                   : geographic_headings(w_sky);
+      : needs_visibility          ? math_headings(w_sky)
+                                  : geographic_headings(w_sky);
 
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
@@ -154,19 +236,29 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
           break;
         case Product::Svf: put(0, i, j, svf_from_horizon(sigma)); break;
         case Product::Skyview: put(0, i, j, skyview_from_horizon(sigma, n)); break;
-        case Product::Shaded: {
+        case Product::Shaded:
+        case Product::Irradiance: {
           // Visibility horizon: floored at the tangent plane (math-notes §10.14).
           for (std::size_t k = 0; k < sigma.size(); ++k)
             sigma[k] = std::clamp(std::max(sigma[k], tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
                                   std::numbers::pi / 2);
           sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
-          const double radiance = options.shaded.albedo * shader->shade(vis, n, n);
-          put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
+          if (!lighting) {
+            const double radiance = options.shaded.albedo * shader->shade(vis, n, n);
+            put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
+            break;
+          }
+          const double sun = shadow.empty() ? 0.0 : shadow[static_cast<std::size_t>(j) * field.width + i];
+          for (int c = 0; c < lighting->channels(); ++c) {
+            const double e = lighting->irradiance(c, vis, n, sun);
+            put(c, i, j, product == Product::Irradiance ? e : srgb_code_value(e * display_per_irradiance));
+          }
           break;
         }
+        case Product::Shadow: break;  // returned above
       }
     }
-  }, progress);
+  }, main_progress);
   return out;
 }
 

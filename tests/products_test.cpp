@@ -23,9 +23,11 @@ ProductOptions flat_earth() {
 }
 
 TEST(ProductNames, RoundTrip) {
-  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded, Product::Shadow,
+                    Product::Irradiance})
     EXPECT_EQ(parse_product(product_name(p)), p);
   EXPECT_FALSE(parse_product("hillshade"));
+  EXPECT_EQ(product_names(), "horizon, svf, skyview, shaded, shadow, irradiance");
 }
 
 TEST(Products, HorizonBandsAreGeographicAzimuthsClockwiseFromNorth) {

@@ -156,7 +156,10 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--no-sun", args->no_sun,
                 "Sky light only; with nothing else about the light, the classic uniform-sky relief "
                 "(open flat ground white)");
-  cmd->add_option("--backend", args->backend, "Compute backend: reference (CPU, double precision)")->capture_default_str();
+  cmd->add_option("--backend", args->backend,
+                  "Compute backend: auto (GPU where an OpenGL 4.5 context exists and the GPU has the product, "
+                  "else reference) | gpu | reference (CPU, double precision)")
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");

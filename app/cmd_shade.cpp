@@ -9,6 +9,7 @@
 
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/quality.h"
 #include "terrain/dem_reader.h"
 #include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
@@ -35,6 +36,7 @@ struct ShadeArgs {
   double z_factor = 1.0;
   std::optional<double> scale, xscale, yscale;
   shading::ProductOptions options;  // defaults come from the library
+  std::string quality = "default";
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -128,6 +130,11 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
   cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(CLI::PositiveNumber);
   cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
+  cmd->add_option("--quality", args->quality,
+                  "Preset from the measured speed/error front: fast | default | high "
+                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--sh-order/--nlp-order win")
+      ->check(CLI::IsMember({"fast", "default", "high"}))
+      ->capture_default_str();
   cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
   cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
@@ -164,7 +171,18 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
-  cmd->callback([&run, args] { run = [args] { return run_shade(*args); }; });
+  cmd->callback([&run, args, cmd] {
+    // The preset sets the quality knobs the user did not give explicitly.
+    shading::ProductOptions preset = args->options;
+    shading::apply_quality(*shading::parse_quality(args->quality), preset);
+    auto& o = args->options;
+    if (!cmd->count("--azimuths")) o.march.azimuths = preset.march.azimuths;
+    if (!cmd->count("--kv")) o.march.k_v = preset.march.k_v;
+    if (!cmd->count("--level-offset")) o.march.level_offset = preset.march.level_offset;
+    if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
+    if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
+    run = [args] { return run_shade(*args); };
+  });
 }
 
 }  // namespace skylit::app

@@ -4,6 +4,8 @@
 #include "cli_test_util.h"
 #include "terrain_test_util.h"
 
+#include "shading/quality.h"
+
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
@@ -54,11 +56,12 @@ Opened open_output(const std::string& path) {
   return o;
 }
 
-// Expects a failure: exit 1, exactly one line starting "skylit: error:", no output.
+// Expects a failure: exit 1 (bad input) or 2 (bad usage), exactly one line starting
+// "skylit: error:", no output.
 void expect_clean_failure(const ScratchDir& dir, const std::string& args, const std::string& needle) {
   const auto before = dir.listing();
   const auto r = run_skylit("shade " + args + " -q", true);
-  EXPECT_EQ(r.status, 1) << args << "\n" << r.out;
+  EXPECT_TRUE(r.status == 1 || r.status == 2) << args << "\n" << r.out;
   EXPECT_EQ(count_lines(r.out), 1) << r.out;
   EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
   EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
@@ -213,4 +216,20 @@ TEST(CliShade, HelpAndVersion) {
   const auto v = run_skylit("--version");
   EXPECT_EQ(v.status, 0);
   EXPECT_NE(v.out.find("skylit "), std::string::npos);
+}
+
+TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
+  ScratchDir dir;
+  const std::string in = make_hill(dir);
+  auto bands = [&](const std::string& extra) {
+    const std::string out = dir.file("h.tif");
+    const auto r = run_skylit("shade " + in + " -o " + out + " -p horizon --overwrite -q " + extra, true);
+    EXPECT_EQ(r.status, 0) << r.out;
+    return open_output(out).bands;
+  };
+  // Azimuth counts of the presets, from the library (shading/quality.h).
+  EXPECT_EQ(bands("--quality fast"), skylit::shading::quality_settings(skylit::shading::Quality::Fast).azimuths);
+  EXPECT_EQ(bands("--quality high"), skylit::shading::quality_settings(skylit::shading::Quality::High).azimuths);
+  EXPECT_EQ(bands("--quality fast --azimuths 8"), 8);
+  expect_clean_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
 }

@@ -37,6 +37,7 @@ struct ShadeArgs {
   std::optional<double> scale, xscale, yscale;
   shading::ProductOptions options;  // defaults come from the library
   std::string quality = "default";
+  std::string shading_mode = "table";
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -135,6 +136,11 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--sh-order/--nlp-order win")
       ->check(CLI::IsMember({"fast", "default", "high"}))
       ->capture_default_str();
+  cmd->add_option("--shading-mode", args->shading_mode,
+                  "How visibility meets the sky: table (sky x BRDF table, the accurate default) | triple "
+                  "(SH triple product) | log-brdf (the seed's log-SH BRDF; errs by tens of %, docs/numerics.md)")
+      ->check(CLI::IsMember({"table", "triple", "log-brdf"}))
+      ->capture_default_str();
   cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
   cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
@@ -181,6 +187,7 @@ void add_shade_command(CLI::App& root, Action& run) {
     if (!cmd->count("--level-offset")) o.march.level_offset = preset.march.level_offset;
     if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
     if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
+    args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
     run = [args] { return run_shade(*args); };
   });
 }

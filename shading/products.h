@@ -32,6 +32,7 @@
 #pragma once
 
 #include "shading/horizon_march.h"
+#include "shading/shading_modes.h"
 #include "shading/lighting.h"
 #include "terrain/height_field.h"
 
@@ -58,6 +59,9 @@ struct ExactOptions {
 };
 
 struct ShadedOptions {
+  // How V meets the sky (docs/numerics.md §3): the sky×BRDF table is the most accurate
+  // at the same per-texel cost; triple product and the seed's log-BRDF are selectable.
+  ShadingMode mode = ShadingMode::SkyBrdfTable;
   double albedo = 1.0;          // Lambert albedo
   double exposure = 1.0;        // linear radiance multiplier before the sRGB curve
   int sh_order = 4;             // n: SH bands of the visibility

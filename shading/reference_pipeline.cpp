@@ -2,6 +2,8 @@
 
 #include "shading/azimuth.h"
 #include "shading/shading_modes.h"
+#include "shading/sh_exp.h"
+#include "shading/quadrature.h"
 #include "shading/sun_light.h"
 #include "shading/surface_normals.h"
 #include "shading/wedge.h"
@@ -95,34 +97,62 @@ std::vector<Heading> math_headings(int w) {
   return h;
 }
 
-// Sky tables and sun of a Lighting for `shaded` and `irradiance`: one Lambert
-// sky×cosine table (the default shading mode's grid) per output channel — R, G, B for a
-// colour `shaded`, else the broadband luminance.
+// Sky input of a Shader in `mode`: the full-frequency radiance (table mode) or its
+// SH projection over the upper hemisphere (the skies are 0 below the horizon).
+SkyInput sky_input(ShadingMode mode, int order, Radiance radiance) {
+  SkyInput in;
+  if (mode != ShadingMode::SkyBrdfTable)
+    in.sh = quad::project(order, quad::sphere_product_rule(64, 128, 0.0, 1.0), radiance);
+  in.radiance = std::move(radiance);
+  return in;
+}
+
+// Lambert shading of the sky light for one channel: ∫ L·V·max(n·ω, 0)/π dω, in the
+// chosen mode; LogBrdf works from the log-visibility, the others from V.
+class SkyShading {
+ public:
+  SkyShading(ShadingMode mode, int order, Radiance radiance) {
+    ShadingSettings settings;
+    settings.mode = mode;
+    settings.order = order;
+    shader_ = std::make_unique<Shader>(settings, sky_input(mode, order, std::move(radiance)));
+  }
+  bool needs_log() const { return shader_->settings().mode == ShadingMode::LogBrdf; }
+  double radiance(std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n) const {
+    return needs_log() ? shader_->shade_log(log_vis, n, n) : shader_->shade(vis, n, n);
+  }
+
+ private:
+  std::unique_ptr<Shader> shader_;
+};
+
+// Sky shading and sun of a Lighting for `shaded` and `irradiance`: one sky shading per
+// output channel — R, G, B for a colour `shaded`, else the broadband luminance.
 class LitShading {
  public:
-  LitShading(const Lighting& l, bool rgb, int order) : sun_(l.sun.direction) {
+  LitShading(const Lighting& l, bool rgb, ShadingMode mode, int order) : sun_(l.sun.direction) {
     const int channels = rgb ? 3 : 1;
-    const AxisGrid grid = table_grid_for(ShadingSettings{});
     for (int c = 0; c < channels; ++c) {
       dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
       if (!l.sky) continue;
       const std::shared_ptr<const sky::SkyModel> s = l.sky;
-      const Radiance radiance = rgb ? Radiance([s, c](const glm::dvec3& d) { return s->radiance(d)[c]; })
-                                    : Radiance([s](const glm::dvec3& d) { return sky::luminance(s->radiance(d)); });
-      tables_.push_back(std::make_unique<SkyBrdfTable>(order, 1.0, radiance, grid));
+      Radiance radiance = rgb ? Radiance([s, c](const glm::dvec3& d) { return s->radiance(d)[c]; })
+                              : Radiance([s](const glm::dvec3& d) { return sky::luminance(s->radiance(d)); });
+      sky_.push_back(std::make_unique<SkyShading>(mode, order, std::move(radiance)));
     }
   }
   int channels() const { return static_cast<int>(dni_.size()); }
-  // Irradiance of channel c (W/m²): π·V·T(n) (= ∫ L·V·max(n·ω, 0) dω) plus the sun.
-  double irradiance(int c, std::span<const double> vis, const glm::dvec3& n, double shadow) const {
-    const double sky = tables_.empty() ? 0.0 : std::numbers::pi * tables_[c]->shade(vis, n);
+  // Irradiance of channel c (W/m²): π·(sky shading) (= ∫ L·V·max(n·ω, 0) dω) plus the sun.
+  double irradiance(int c, std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n,
+                    double shadow) const {
+    const double sky = sky_.empty() ? 0.0 : std::numbers::pi * sky_[c]->radiance(vis, log_vis, n);
     return std::max(sky + sun_irradiance(n, sun_, dni_[c], shadow), 0.0);
   }
 
  private:
   glm::dvec3 sun_;
   std::vector<double> dni_;
-  std::vector<std::unique_ptr<SkyBrdfTable>> tables_;
+  std::vector<std::unique_ptr<SkyShading>> sky_;
 };
 
 // The sun's march follows the products' options: curvature, distance, exact.
@@ -194,20 +224,17 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   // lighting's sky tables and sun.
   const bool needs_visibility = product == Product::Shaded || product == Product::Irradiance;
   const sh::WedgeOperator* wedge = nullptr;
-  std::unique_ptr<Shader> shader;
+  std::unique_ptr<SkyShading> uniform_sky;
   std::unique_ptr<LitShading> lighting;
+  const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
   if (needs_visibility) {
     const ShadedOptions& s = options.shaded;
     wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, sh::WedgeInterpolation::Linear);
-    if (lit) {
-      lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.sh_order);
-    } else {
-      ShadingSettings settings;
-      settings.order = s.sh_order;
-      SkyInput sky;
-      sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
-      shader = std::make_unique<Shader>(settings, sky);
-    }
+    if (lit)
+      lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
+    else
+      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order,
+                                                 [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; });
   }
   // Tone map of the lit `shaded` (lighting.h): E → linear display value.
   const double display_per_irradiance =
@@ -220,10 +247,11 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
 
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
-    std::vector<double> scratch, vis;
+    std::vector<double> scratch, vis, log_vis;
     if (wedge) {
       scratch.resize(static_cast<std::size_t>(wedge->azimuths()) * wedge->nlp_order());
       vis.resize(wedge->rows());
+      if (log_route) log_vis.resize(wedge->rows());
     }
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;  // stays NaN
@@ -242,15 +270,18 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
           for (std::size_t k = 0; k < sigma.size(); ++k)
             sigma[k] = std::clamp(std::max(sigma[k], tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
                                   std::numbers::pi / 2);
-          sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
+          if (log_route)
+            sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
+          else
+            sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
           if (!lighting) {
-            const double radiance = options.shaded.albedo * shader->shade(vis, n, n);
+            const double radiance = options.shaded.albedo * uniform_sky->radiance(vis, log_vis, n);
             put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
             break;
           }
           const double sun = shadow.empty() ? 0.0 : shadow[static_cast<std::size_t>(j) * field.width + i];
           for (int c = 0; c < lighting->channels(); ++c) {
-            const double e = lighting->irradiance(c, vis, n, sun);
+            const double e = lighting->irradiance(c, vis, log_vis, n, sun);
             put(c, i, j, product == Product::Irradiance ? e : srgb_code_value(e * display_per_irradiance));
           }
           break;

@@ -46,8 +46,12 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
   if (backend == "reference") return shading::compute_product(field, product, options, progress);
   if ((backend == "gpu" || backend == "auto") && !gpu::gpu_supports(product, options)) {
     if (backend == "auto") return shading::compute_product(field, product, options, progress);
-    throw std::invalid_argument("--backend gpu cannot compute '" + std::string(shading::product_name(product)) +
-                                "' with a sun or sky model yet; use --backend reference (or auto)");
+    throw std::invalid_argument("--backend gpu cannot compute '" + std::string(shading::product_name(product)) + "'" +
+                                (options.exact && shading::uses_lighting(product, options)
+                                     ? std::string(" with --exact (the sun's exact march is CPU-only)")
+                                     : std::string(" with these options (it has the sky×BRDF table shading "
+                                                   "mode only)")) +
+                                "; use --backend reference (or auto)");
   }
   if (backend == "gpu" || backend == "auto") {
     std::string why;

@@ -11,8 +11,9 @@ namespace skylit::app {
 
 // Names accepted by --backend, the default first:
 //   auto       gpu where an OpenGL 4.5 context can be created and the GPU pipeline
-//              has the product (gpu::gpu_supports: not yet shadow, irradiance or a
-//              lit shaded), else reference; also reference, with a note on stderr,
+//              has the product with these options (gpu::gpu_supports: every product;
+//              the lit ones — shadow, irradiance, shaded with a sun or sky — not with
+//              the exact march), else reference; also reference, with a note on stderr,
 //              when the gpu backend fails at run time (e.g. over its buffer limits)
 //   gpu        OpenGL 4.5 compute (an error where no context can be created)
 //   reference  CPU, double precision

@@ -23,8 +23,10 @@
 #include "gpu/timer.h"
 #include "shading/azimuth.h"
 #include "shading/horizon_march.h"
+#include "shading/lighting.h"
 #include "shading/nlp.h"
 #include "shading/shading_modes.h"
+#include "shading/sun_light.h"
 #include "shading/wedge.h"
 #include "terrain/pyramid.h"
 
@@ -47,6 +49,8 @@ enum Binding : int {
   kWedge = 9,
   kRotation = 10,
   kTable = 11,
+  kShadow = 12,
+  kSunSchedule = 13,
 };
 
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
@@ -60,13 +64,15 @@ int horizon_bands(Product product, const shading::ProductOptions& o) {
   return o.exact ? o.exact_options.sky_azimuths : o.march.azimuths;
 }
 
+bool needs_visibility(Product product) { return product == Product::Shaded || product == Product::Irradiance; }
+
 // Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
-// the wedge operator's math-frame samples φ_j = j·2π/W for shaded. Snapped (see
-// shading/azimuth.h) so cardinal rays along the grid's edges stay on it.
+// the wedge operator's math-frame samples φ_j = j·2π/W for shaded and irradiance.
+// Snapped (see shading/azimuth.h) so cardinal rays along the grid's edges stay on it.
 std::vector<float> band_headings(Product product, int w) {
   std::vector<float> out;
   for (int k = 0; k < w; ++k) {
-    const shading::Heading u = product == Product::Shaded
+    const shading::Heading u = needs_visibility(product)
                                    ? shading::heading_from_math(shading::kTwoPi * k / w)
                                    : band_heading(k, w);
     out.push_back(static_cast<float>(u.east));
@@ -111,34 +117,124 @@ void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
 void validate_options(Product product, const shading::ProductOptions& o) {
   if (!gpu_supports(product, o))
     throw std::invalid_argument("the GPU pipeline cannot compute '" + std::string(shading::product_name(product)) +
-                                "' with a sun or sky model yet");
+                                "' with these options (a lit product needs ProductOptions::lighting and "
+                                "the multi-resolution march)");
   shading::validate(o.march);
   if (o.exact && !(o.exact_options.step_texels > 0.0)) throw std::invalid_argument("exact: step must be > 0");
   if (horizon_bands(product, o) < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
   if (!(o.shaded.albedo >= 0.0) || !(o.shaded.exposure > 0.0))
     throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+  if (shading::uses_lighting(product, o)) shading::validate(*o.lighting);
+}
+
+// The sun's march as compute_product sets it up (reference_pipeline.cpp,
+// sun_shadow_options): shading::sun_march_options() with the products' curvature and
+// maximum distance.
+shading::MarchOptions sun_march(const shading::ProductOptions& o) {
+  shading::MarchOptions m = shading::sun_march_options();
+  m.curvature = o.march.curvature;
+  m.max_distance_m = o.march.max_distance_m;
+  return m;
+}
+
+// Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.
+bool sun_lit(Product product, const shading::ProductOptions& o) {
+  return shading::uses_lighting(product, o) && sky::luminance(o.lighting->sun.dni) > 0.0;
+}
+
+// Stage 0 (lit products with a sun, and shadow): sun_shadow.comp over the whole field
+// into `shadow` (4 B/texel), in row chunks of ≤ `invocations` texels. Heights, row
+// spacing and the valid mask must be bound. Returns the GPU time (ms).
+double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, const shading::ProductOptions& o,
+                std::size_t invocations, Buffer& shadow) {
+  const shading::HorizonMarcher marcher(field, sun_march(o));
+  std::vector<float> schedule;
+  for (int s = 0; s < marcher.steps(); ++s) {
+    schedule.push_back(static_cast<float>(marcher.distance(s)));
+    schedule.push_back(0.0f);
+  }
+  check_storage_size(field.size() * sizeof(float), "GPU pipeline: the sun shadow");
+  Buffer schedule_buf = Buffer::from(std::span<const float>(schedule));
+  shadow = Buffer(field.size() * sizeof(float));
+  schedule_buf.bind_storage(kSunSchedule);
+  shadow.bind_storage(kShadow);
+  set_grid_uniforms(sun, field);
+  sun.set_uniform("steps", marcher.steps());
+  const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
+  GpuTimer timer;
+  double ms = 0.0;
+  for (int r0 = 0; r0 < field.height; r0 += chunk) {
+    sun.set_uniform("row_offset", r0);
+    sun.set_uniform("chunk_rows", std::min(chunk, field.height - r0));
+    {
+      ScopedGpuTimer timing(timer);
+      sun.dispatch_covering(field.width, std::min(chunk, field.height - r0));
+    }
+    ms += timer.elapsed_ms();
+  }
+  return ms;
 }
 
 }  // namespace
 
 bool gpu_supports(Product product, const shading::ProductOptions& options) {
   const bool known = product == Product::Horizon || product == Product::Svf || product == Product::Skyview ||
-                     product == Product::Shaded;
-  return known && !shading::uses_lighting(product, options);
+                     product == Product::Shaded || product == Product::Shadow || product == Product::Irradiance;
+  if (!known) return false;
+  // Shaded and irradiance: the sky × BRDF table mode only (ShadedOptions::mode).
+  if (needs_visibility(product) && options.shaded.mode != shading::ShadingMode::SkyBrdfTable) return false;
+  if (!shading::uses_lighting(product, options)) return true;
+  // Lit products: the sun's own march (not the exact one), and a lighting to use.
+  return options.lighting.has_value() && !options.exact;
 }
 
 struct GpuProductPipeline::Impl {
   int azimuths = 0;
   std::optional<ComputeProgram> march;     // horizon_march.comp, or horizon_exact.comp with exact
   std::optional<ComputeProgram> products;  // surface_products.comp
+  std::optional<ComputeProgram> sun;       // sun_shadow.comp: shadow, and lit products with a sun
   Buffer headings;
-  Buffer wedge, rotation, table;  // shaded only
+  Buffer wedge, rotation, table;  // shaded and irradiance only (table: one per channel)
+  int channels = 1;               // output bands of shaded/irradiance
+  std::vector<double> sun_dni;    // lit: the sun's DNI per output channel
+  double display_per_irradiance = 0.0;  // lit shaded: the tone map's factor
 };
 
 GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOptions& options)
     : mProduct(product), mOptions(options), mImpl(new Impl) {
   validate_options(product, options);
   Impl& k = *mImpl;
+  const bool lit = shading::uses_lighting(product, options);
+  if (sun_lit(product, options) || product == Product::Shadow) {
+    // Sun shadow kernel: the sun's angles as compute_product takes them from the lighting.
+    const glm::dvec3& s = options.lighting->sun.direction;
+    const double azimuth = sky::azimuth_of(s), elevation = sky::elevation_of(s);
+    const shading::Heading u = shading::heading_from_geographic(azimuth);
+    GlslDefines sun;
+    sun.set("LOCAL_SIZE_X", kLocalSize)
+        .set("LOCAL_SIZE_Y", kLocalSize)
+        .set("PI", std::numbers::pi)
+        .set("HALF_PI", std::numbers::pi / 2)
+        .set("INV_TWO_R_EFF", inv_two_r_eff(options.march.curvature))
+        .set("HEIGHTS_BINDING", kHeights)
+        .set("ROW_DX_BINDING", kRowDx)
+        .set("VALID_BINDING", kValid)
+        .set("SCHEDULE_BINDING", kSunSchedule)
+        .set("SHADOW_BINDING", kShadow)
+        .set("DISC_RADIUS", shading::SunShadowOptions{}.radius);
+    k.sun.emplace(ComputeProgram::from_embedded("sun_shadow.comp", sun));
+    // The sun as uniforms: the kernel's source, hence the driver's compiled-kernel
+    // cache entry, is the same for every sun position.
+    const ComputeProgram& p = *k.sun;
+    p.set_uniform("sun_east", static_cast<float>(u.east));
+    p.set_uniform("sun_north", static_cast<float>(u.north));
+    p.set_uniform("sun_elevation", static_cast<float>(elevation));
+    p.set_uniform("sun_sin_az", static_cast<float>(std::sin(azimuth)));
+    p.set_uniform("sun_cos_az", static_cast<float>(std::cos(azimuth)));
+    p.set_uniform("sun_sin_el", static_cast<float>(std::sin(elevation)));
+    p.set_uniform("sun_cos_el", static_cast<float>(std::cos(elevation)));
+  }
+  if (product == Product::Shadow) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);
   const std::vector<float> headings = band_headings(product, k.azimuths);
   k.headings = Buffer::from(std::span<const float>(headings));
@@ -163,7 +259,9 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       .set("PRODUCT_SVF", static_cast<int>(Product::Svf))
       .set("PRODUCT_SKYVIEW", static_cast<int>(Product::Skyview))
       .set("PRODUCT_SHADED", static_cast<int>(Product::Shaded))
+      .set("PRODUCT_IRRADIANCE", static_cast<int>(Product::Irradiance))
       .set("PRODUCT", static_cast<int>(product))
+      .set("LIT", lit ? 1 : 0)
       .set("EXACT_MARCH", options.exact ? 1 : 0)
       .set("PI", std::numbers::pi)
       .set("HALF_PI", std::numbers::pi / 2)
@@ -171,18 +269,65 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       .set("VALID_BINDING", kValid)
       .set("OUTPUT_BINDING", kOutput);
   if (options.exact) prod.set("STEP_TEXELS", options.exact_options.step_texels);
-  if (product == Product::Shaded) {
+  if (needs_visibility(product)) {
     const shading::ShadedOptions& s = options.shaded;
     const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, sh::WedgeInterpolation::Linear);
     // The reference's shading set-up, restated (reference_pipeline.cpp keeps it inside
-    // compute_product): default mode (sky × BRDF table), Lambert, uniform sky of
-    // radiance 1 above the horizontal. gpu_products_test fails if the two diverge.
-    shading::ShadingSettings settings;
-    settings.order = s.sh_order;
-    shading::SkyInput sky;
-    sky.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
-    const shading::Shader shader(settings, sky);
-    const shading::SkyBrdfTable& table = *shader.table();
+    // compute_product): a shading::Shader in the sky × BRDF table mode, Lambert. Unlit:
+    // uniform sky of radiance 1 above the horizontal. Lit (LitShading there): one
+    // Shader per output channel from the lighting's sky radiance (R, G, B for a colour
+    // shaded, else its luminance). gpu_products_test / gpu_lighting_test fail if the
+    // two diverge.
+    std::vector<std::unique_ptr<shading::Shader>> lit_shaders;
+    std::vector<const shading::SkyBrdfTable*> lit_tables;
+    std::optional<shading::Shader> shader;
+    if (lit) {
+      const shading::Lighting& l = *options.lighting;
+      const bool rgb = product == Product::Shaded && l.colour;
+      k.channels = rgb ? 3 : 1;
+      shading::ShadingSettings settings;
+      settings.order = s.sh_order;
+      for (int c = 0; c < k.channels; ++c) {
+        k.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+        if (!l.sky) continue;
+        const std::shared_ptr<const sky::SkyModel> sm = l.sky;
+        const shading::Radiance radiance =
+            rgb ? shading::Radiance([sm, c](const glm::dvec3& d) { return sm->radiance(d)[c]; })
+                : shading::Radiance([sm](const glm::dvec3& d) { return sky::luminance(sm->radiance(d)); });
+        shading::SkyInput sky_input;
+        sky_input.radiance = radiance;
+        lit_shaders.push_back(std::make_unique<shading::Shader>(settings, sky_input));
+        lit_tables.push_back(lit_shaders.back()->table());
+      }
+      k.display_per_irradiance = s.exposure * shading::kShadedKey * s.albedo / l.reference_irradiance;
+    } else {
+      shading::ShadingSettings settings;
+      settings.order = s.sh_order;
+      shading::SkyInput sky_input;
+      sky_input.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+      shader.emplace(settings, sky_input);
+    }
+    const shading::SkyBrdfTable* first_table = lit ? (lit_tables.empty() ? nullptr : lit_tables[0])
+                                                   : shader->table();
+    // The grid is the default mode's either way; without a sky the lookup is unused.
+    const shading::AxisGrid grid = first_table ? first_table->grid()
+                                               : shading::table_grid_for(shading::ShadingSettings{});
+    std::vector<float> texels;
+    std::size_t table_size = 1;
+    if (lit) {
+      for (const shading::SkyBrdfTable* t : lit_tables) texels.insert(texels.end(), t->texels().begin(), t->texels().end());
+      if (!lit_tables.empty()) table_size = lit_tables[0]->texels().size();
+      if (texels.empty()) texels.assign(1, 0.0f);  // GL wants non-empty buffers bound
+    } else {
+      texels.assign(first_table->texels().begin(), first_table->texels().end());
+    }
+    if (lit) {
+      prod.set("CHANNELS", k.channels)
+          .set("HAS_SKY", lit_tables.empty() ? 0 : 1)
+          .set("SUN_LIT", sun_lit(product, options) ? 1 : 0)
+          .set("TABLE_SIZE", static_cast<int>(table_size))
+          .set("SHADOW_BINDING", kShadow);
+    }
 
     std::vector<double> occlusion_factors(s.nlp_order, 0.0);
     for (int l = 1; l < s.nlp_order; ++l) occlusion_factors[l] = sh::nlp_norm(l) / (static_cast<double>(l) * (l + 1));
@@ -199,17 +344,23 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set_literal("NLP_OCCLUSION_FACTORS", float_array_literal(occlusion_factors))
         .set("WEDGE_ROWS", op.rows())
         .set("WEDGE_COLS", op.cols())
-        .set("TABLE_N_THETA", table.grid().n_theta)
-        .set("TABLE_N_PHI", table.grid().n_phi)
-        .set("TABLE_THETA_MAX", table.grid().theta_max)
+        .set("TABLE_N_THETA", grid.n_theta)
+        .set("TABLE_N_PHI", grid.n_phi)
+        .set("TABLE_THETA_MAX", grid.theta_max)
         .set("WEDGE_BINDING", kWedge)
         .set("ROTATION_BINDING", kRotation)
         .set("TABLE_BINDING", kTable);
     k.wedge = Buffer::from(op.matrix_f32());
     k.rotation = Buffer::from(std::span<const float>(rotation));
-    k.table = Buffer::from(table.texels());
+    k.table = Buffer::from(std::span<const float>(texels));
   }
   k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
+  if (lit && k.products->has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
+    const glm::dvec3& sd = options.lighting->sun.direction;
+    k.products->set_uniform("sun_dir", static_cast<float>(sd.x), static_cast<float>(sd.y), static_cast<float>(sd.z));
+    for (int c = 0; c < k.channels; ++c)
+      k.products->set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(k.sun_dni[c]));
+  }
 }
 
 GpuProductPipeline::~GpuProductPipeline() = default;
@@ -223,8 +374,31 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   const Impl& k = *mImpl;
 
   const int w = field.width, h = field.height, bands = k.azimuths;
-  const int out_bands = mProduct == Product::Horizon ? bands : 1;
+  const int out_bands = mProduct == Product::Horizon ? bands : needs_visibility(mProduct) ? k.channels : 1;
   const std::size_t texels = field.size();
+
+  if (mProduct == Product::Shadow) {  // the sun pass alone
+    const auto upload_start = Clock::now();
+    const std::vector<float> row_dx(field.dx_per_row.begin(), field.dx_per_row.end());
+    const std::vector<std::uint32_t> valid_words = pack_valid_bytes(field);
+    check_storage_size(texels * sizeof(float), "GPU pipeline: the heights");
+    Buffer heights = Buffer::from(std::span<const float>(field.heights));
+    Buffer dx = Buffer::from(std::span<const float>(row_dx));
+    Buffer valid = Buffer::from(std::span<const std::uint32_t>(valid_words));
+    heights.bind_storage(kHeights);
+    dx.bind_storage(kRowDx);
+    valid.bind_storage(kValid);
+    t.upload_ms = ms_since(upload_start);
+    Buffer shadow;
+    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, shadow);
+    shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
+    shadow.download(out.data.data(), texels * sizeof(float));
+    throw_on_gl_error("GpuProductPipeline::compute (shadow)");
+    if (progress) progress(1.0);
+    t.wall_ms = ms_since(start);
+    if (timings) *timings = t;
+    return out;
+  }
 
   // Stage 1 (CPU): the marcher's step schedule and the height pyramid.
   std::vector<float> schedule, coeffs;
@@ -286,12 +460,15 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     levels_buf.bind_storage(kLevels);
     coeffs_buf.bind_storage(kCoeffs);
   }
-  if (mProduct == Product::Shaded) {
+  if (needs_visibility(mProduct)) {
     k.wedge.bind_storage(kWedge);
     k.rotation.bind_storage(kRotation);
     k.table.bind_storage(kTable);
   }
   t.upload_ms = ms_since(upload_start);
+  // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
+  Buffer shadow;
+  if (k.sun) t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, shadow);
 
   // Stage 2: the march. Stage 3: the product. Row chunks bound a dispatch's length.
   const ComputeProgram& march = *k.march;
@@ -342,9 +519,16 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     for (int b = 0; b < bands; ++b) out.band_names.push_back(horizon_band_name(b, bands));
   else
     out.band_names.emplace_back(shading::product_name(mProduct));
-  if (mProduct == Product::Shaded)
+  const bool lit = shading::uses_lighting(mProduct, mOptions);
+  if (mProduct == Product::Shaded && lit) {
+    // The tone map of lighting.h, on the host with the reference's own function.
+    if (k.channels == 3) out.band_names = {"red", "green", "blue"};
+    for (float& v : out.data)
+      if (!std::isnan(v)) v = shading::srgb_code_value(static_cast<double>(v) * k.display_per_irradiance);
+  } else if (mProduct == Product::Shaded) {
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::srgb_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure);
+  }
   if (progress) progress(1.0);
   t.wall_ms = ms_since(start);
   if (timings) *timings = t;

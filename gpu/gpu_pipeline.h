@@ -1,9 +1,13 @@
-// The products of `skylit shade` on the GPU (DESIGN.md pipeline steps 2–4, 7, 9):
-// horizon, svf, skyview and shaded, laid out and named like the CPU reference's
+// The products of `skylit shade` on the GPU (DESIGN.md pipeline steps 2–4, 7–9):
+// horizon, svf, skyview, shaded (uniform sky, or lit by ProductOptions::lighting),
+// shadow and irradiance, laid out and named like the CPU reference's
 // shading::compute_product with the same ProductOptions, which it matches to float32
 // rounding (tests/gpu_products_test.cpp).
 //
 // Stages (gpu/README.md "Product pipeline"):
+//  0. lit products with a sun, and shadow: shaders/sun_shadow.comp, the sun's own march
+//     (shading::sun_march_options() schedule from C++, level-0 bilinear heights) and
+//     the disc fraction above the horizon and tangent-plane lines (shading/sun_disc);
 //  1. height pyramid: built on the CPU (terrain::HeightPyramid, the reference's own;
 //     HorizonMarcher, which supplies the step schedule, builds a second one it does
 //     not expose), its B-spline coefficients uploaded;
@@ -13,7 +17,10 @@
 //  3. shaders/surface_products.comp: per texel, Horn normal and the product
 //     (horizon floors, svf, exact skyview slice integrals, or NLP slices → linear
 //     wedge assembly → sky×BRDF table shading);
-//  4. host: read-back; shaded gets albedo, exposure and shading::srgb_code_value.
+//     irradiance and lit shaded: π·V·T(n) per channel from the lighting's sky tables
+//     plus the sun DNI·max(n·s, 0)·shadow;
+//  4. host: read-back; shaded gets albedo, exposure (lit: lighting.h's tone map) and
+//     shading::srgb_code_value.
 //
 // Edge rules (exact-zero cardinal headings, samples within edge_epsilon_texels of the
 // last row/column count) are the CPU reference's, from shading/horizon_ray.h.
@@ -27,13 +34,16 @@
 
 namespace skylit::gpu {
 
-// Whether the pipeline computes `product` with `options`: horizon, svf, skyview, and
-// shaded under the default uniform sky; not yet shadow, irradiance or a lit shaded
-// (ProductOptions::lighting: sun and sky models).
+// Whether the pipeline computes `product` with `options`: every product; the lit ones
+// (shading::uses_lighting: shadow, irradiance, shaded with a lighting) need
+// ProductOptions::lighting and the multi-resolution march (not options.exact, whose
+// sun uses the exact march on the CPU); shaded and irradiance need the sky × BRDF table
+// shading mode (ShadedOptions::mode, the default).
 bool gpu_supports(shading::Product product, const shading::ProductOptions& options);
 
 struct GpuPipelineTimings {
   double pyramid_ms = 0.0;   // CPU: pyramid build, schedule
+  double sun_ms = 0.0;       // GPU timer: the sun shadow pass (lit products, shadow)
   double upload_ms = 0.0;    // buffers to the GPU
   double march_ms = 0.0;     // GPU timer (Mesa llvmpipe reports ~0 for compute)
   double products_ms = 0.0;  // GPU timer

@@ -69,7 +69,7 @@ TEST_F(GpuBackendTest, GpuAndReferenceWriteTheSameProducts) {
   // Tolerances as in gpu_products_test (float32 vs double); shaded: 8-bit codes.
   for (const Case& c : {Case{"horizon", 0.05}, Case{"svf", 2e-3}, Case{"skyview", 2e-3}, Case{"shaded", 1.0}}) {
     SCOPED_TRACE(c.product);
-    // --no-sun: the uniform-sky `shaded` (a sun or sky model runs on the reference only).
+    // --no-sun: the uniform-sky `shaded` (lit products: the next test).
     const std::string common = std::string("shade --synthetic --size 48 --azimuths 8 -q --no-sun -p ") + c.product;
     ASSERT_EQ(run_skylit(common + " --backend gpu -o " + out(std::string(c.product) + "_gpu.tif")).status, 0);
     ASSERT_EQ(run_skylit(common + " --backend reference -o " + out(std::string(c.product) + "_ref.tif")).status, 0);
@@ -93,6 +93,44 @@ TEST_F(GpuBackendTest, GpuAndReferenceWriteTheSameProducts) {
       EXPECT_EQ(within, compared);
     }
   }
+}
+
+// The lit products (sun shadow, sky tables) end to end; tolerances of gpu_lighting_test:
+// shadow 0.02, irradiance 1e-3 relative (0.02·DNI in a penumbra), shaded 1 code, each on
+// ≥ 99% of texels.
+TEST_F(GpuBackendTest, LitProductsGpuMatchReferenceAndExactFallsBack) {
+  struct Case {
+    const char* product;
+    const char* args;
+    double abs_tol, rel_tol;
+  };
+  for (const Case& c : {Case{"shadow", " -az 135 -alt 10", 0.02, 0.0},
+                        Case{"irradiance", " --sky preetham --sun-azimuth 300 --sun-elevation 30", 1e-3, 1e-3},
+                        Case{"shaded", " --sky preetham -az 135 -alt 20", 1.0, 0.0}}) {
+    SCOPED_TRACE(c.product);
+    const std::string common =
+        std::string("shade --synthetic --size 48 --azimuths 8 -q -p ") + c.product + c.args;
+    const std::string g_path = out(std::string(c.product) + "_lit_gpu.tif");
+    const std::string r_path = out(std::string(c.product) + "_lit_ref.tif");
+    ASSERT_EQ(run_skylit(common + " --backend gpu -o " + g_path).status, 0);
+    ASSERT_EQ(run_skylit(common + " --backend reference -o " + r_path).status, 0);
+    int wg = 0, hg = 0, bg = 0, wr = 0, hr = 0, br = 0;
+    const auto g = read_bands(g_path, wg, hg, bg);
+    const auto r = read_bands(r_path, wr, hr, br);
+    ASSERT_FALSE(g.empty());
+    ASSERT_EQ(g.size(), r.size());
+    ASSERT_EQ(bg, br);
+    std::size_t within = 0;
+    for (std::size_t t = 0; t < g.size(); ++t) within += std::abs(g[t] - r[t]) <= c.abs_tol + c.rel_tol * std::abs(r[t]);
+    EXPECT_GE(static_cast<double>(within) / g.size(), 0.99);
+  }
+  // The sun's exact march is CPU-only: gpu refuses in one line, auto falls back.
+  const std::string exact = "shade --synthetic --size 16 --azimuths 4 -q -p shadow --exact -o ";
+  const auto refused = run_skylit(exact + out("e_gpu.tif") + " --backend gpu", true);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.out.find("--exact"), std::string::npos) << refused.out;
+  EXPECT_EQ(run_skylit(exact + out("e_auto.tif")).status, 0);
+  EXPECT_TRUE(fs::exists(out("e_auto.tif")));
 }
 
 TEST_F(GpuBackendTest, AutoIsTheDefaultAndGpuWithoutContextFailsInOneLine) {

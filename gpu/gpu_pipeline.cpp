@@ -1,6 +1,7 @@
 #include "gpu/gpu_pipeline.h"
 
 #include "shading/horizon_ray.h"
+#include "shading/reference_pipeline.h"
 
 #include <epoxy/gl.h>
 
@@ -127,16 +128,6 @@ void validate_options(Product product, const shading::ProductOptions& o) {
   if (shading::uses_lighting(product, o)) shading::validate(*o.lighting);
 }
 
-// The sun's march as compute_product sets it up (reference_pipeline.cpp,
-// sun_shadow_options): shading::sun_march_options() with the products' curvature and
-// maximum distance.
-shading::MarchOptions sun_march(const shading::ProductOptions& o) {
-  shading::MarchOptions m = shading::sun_march_options();
-  m.curvature = o.march.curvature;
-  m.max_distance_m = o.march.max_distance_m;
-  return m;
-}
-
 // Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.
 bool sun_lit(Product product, const shading::ProductOptions& o) {
   return shading::uses_lighting(product, o) && sky::luminance(o.lighting->sun.dni) > 0.0;
@@ -147,7 +138,7 @@ bool sun_lit(Product product, const shading::ProductOptions& o) {
 // spacing and the valid mask must be bound. Returns the GPU time (ms).
 double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, const shading::ProductOptions& o,
                 std::size_t invocations, Buffer& shadow) {
-  const shading::HorizonMarcher marcher(field, sun_march(o));
+  const shading::HorizonMarcher marcher(field, shading::sun_shadow_options(o).march);
   std::vector<float> schedule;
   for (int s = 0; s < marcher.steps(); ++s) {
     schedule.push_back(static_cast<float>(marcher.distance(s)));
@@ -290,16 +281,12 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       for (int c = 0; c < k.channels; ++c) {
         k.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
         if (!l.sky) continue;
-        const std::shared_ptr<const sky::SkyModel> sm = l.sky;
-        const shading::Radiance radiance =
-            rgb ? shading::Radiance([sm, c](const glm::dvec3& d) { return sm->radiance(d)[c]; })
-                : shading::Radiance([sm](const glm::dvec3& d) { return sky::luminance(sm->radiance(d)); });
         shading::SkyInput sky_input;
-        sky_input.radiance = radiance;
+        sky_input.radiance = shading::channel_radiance(l.sky, rgb, c);
         lit_shaders.push_back(std::make_unique<shading::Shader>(settings, sky_input));
         lit_tables.push_back(lit_shaders.back()->table());
       }
-      k.display_per_irradiance = s.exposure * shading::kShadedKey * s.albedo / l.reference_irradiance;
+      k.display_per_irradiance = shading::shaded_display_scale(s, l);
     } else {
       shading::ShadingSettings settings;
       settings.order = s.sh_order;

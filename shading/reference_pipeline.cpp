@@ -135,10 +135,7 @@ class LitShading {
     for (int c = 0; c < channels; ++c) {
       dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
       if (!l.sky) continue;
-      const std::shared_ptr<const sky::SkyModel> s = l.sky;
-      Radiance radiance = rgb ? Radiance([s, c](const glm::dvec3& d) { return s->radiance(d)[c]; })
-                              : Radiance([s](const glm::dvec3& d) { return sky::luminance(s->radiance(d)); });
-      sky_.push_back(std::make_unique<SkyShading>(mode, order, std::move(radiance)));
+      sky_.push_back(std::make_unique<SkyShading>(mode, order, channel_radiance(l.sky, rgb, c)));
     }
   }
   int channels() const { return static_cast<int>(dni_.size()); }
@@ -155,18 +152,6 @@ class LitShading {
   std::vector<std::unique_ptr<SkyShading>> sky_;
 };
 
-// The sun's march follows the products' options: curvature, distance, exact.
-SunShadowOptions sun_shadow_options(const ProductOptions& o) {
-  SunShadowOptions s;
-  s.threads = o.threads;
-  s.march.curvature = o.march.curvature;
-  s.march.max_distance_m = o.march.max_distance_m;
-  if (o.exact) {
-    s.horizon = SunHorizon::Exact;
-    s.exact = ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
-  }
-  return s;
-}
 
 }  // namespace
 
@@ -238,7 +223,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   }
   // Tone map of the lit `shaded` (lighting.h): E → linear display value.
   const double display_per_irradiance =
-      lit ? options.shaded.exposure * kShadedKey * options.shaded.albedo / options.lighting->reference_irradiance : 0.0;
+      lit ? shaded_display_scale(options.shaded, *options.lighting) : 0.0;
 
   const std::vector<Heading> headings =
       product == Product::Horizon ? geographic_headings(w_march)
@@ -291,6 +276,27 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
     }
   }, main_progress);
   return out;
+}
+
+SunShadowOptions sun_shadow_options(const ProductOptions& o) {
+  SunShadowOptions s;
+  s.threads = o.threads;
+  s.march.curvature = o.march.curvature;
+  s.march.max_distance_m = o.march.max_distance_m;
+  if (o.exact) {
+    s.horizon = SunHorizon::Exact;
+    s.exact = ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
+  }
+  return s;
+}
+
+Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, int channel) {
+  if (rgb) return [sky, channel](const glm::dvec3& d) { return sky->radiance(d)[channel]; };
+  return [sky](const glm::dvec3& d) { return sky::luminance(sky->radiance(d)); };
+}
+
+double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting) {
+  return shaded.exposure * kShadedKey * shaded.albedo / lighting.reference_irradiance;
 }
 
 }  // namespace skylit::shading

@@ -6,6 +6,8 @@
 #include "shading/horizon_exact.h"
 #include "shading/horizon_march.h"
 #include "shading/products.h"
+#include "shading/sky_brdf_table.h"
+#include "shading/sun_light.h"
 
 #include <functional>
 #include <memory>
@@ -35,5 +37,14 @@ class HorizonOracle {
   std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march
   ExactMarch exact_;
 };
+
+// Pieces of the lit products that every backend must share:
+// the sun's march (sun_light.h) as the products' options set it (curvature, distance,
+// exact); the radiance of output channel c of a sky (R, G, B when rgb, else the
+// broadband luminance); and the tone map factor of lit `shaded` (lighting.h):
+// code = sRGB(E · shaded_display_scale).
+SunShadowOptions sun_shadow_options(const ProductOptions& options);
+Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, int channel);
+double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting);
 
 }  // namespace skylit::shading

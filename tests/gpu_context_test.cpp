@@ -1,6 +1,8 @@
 // The GPU foundation: headless EGL context, shader embedding and assembly (generated
 // #defines, includes, #line mapping), compile-error reporting, buffers, textures,
 // C++-computed tables and timers. Runs on Mesa llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -21,17 +23,7 @@
 namespace skylit::gpu {
 namespace {
 
-class GpuContextTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context = std::make_unique<HeadlessContext>();
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
-  }
-  std::unique_ptr<HeadlessContext> context;
-};
+using GpuContextTest = testing::GpuTest;
 
 ComputeProgram inline_program(std::string_view name, std::string_view text,
                               const GlslDefines& defines = {}) {

@@ -9,6 +9,8 @@
 //  * closed forms on analytic scenes built here: flat plane (with and without Earth
 //    curvature), a cylindrical pit and a long wall.
 // Runs on Mesa llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -40,17 +42,7 @@ constexpr double kHorizonTolDeg = 5e-3;
 // svf = 1 − mean sin(max σ, 0): |Δsvf| ≤ |Δσ| in radians.
 constexpr double kSvfTol = 1e-4;
 
-class GpuHorizonTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context = std::make_unique<HeadlessContext>();
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
-  }
-  std::unique_ptr<HeadlessContext> context;
-};
+using GpuHorizonTest = testing::GpuTest;
 
 // Deterministic rolling relief with a sharp ridge, on rectangular texels (dx ≠ dy)
 // and a non-square grid, so transposed axes or spacings cannot pass.

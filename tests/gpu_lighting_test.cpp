@@ -22,6 +22,8 @@
 //    value sits within ~1e-3 relative of a rounding boundary, or in a penumbra.
 // Runs on Mesa llvmpipe where there is no GPU: W = 8, and ~20 s, most of it the
 // reference's sky×BRDF tables (one per channel, built again by every compute_product).
+#include "gpu_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,41 +57,11 @@ constexpr double kIrradianceRelTol = 1e-3;
 constexpr double kShadedTolCodes = 1.0;
 constexpr double kMinFraction = 0.99;
 
-class GpuLightingTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context = std::make_unique<HeadlessContext>();
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
-  }
-  std::unique_ptr<HeadlessContext> context;
-};
+using GpuLightingTest = testing::GpuTest;
 
-// Seeded synthetic mountains on a non-square grid, with a nodata texel.
-HeightField synthetic_field() {
-  terrain::SyntheticOptions o;
-  o.width = 100;
-  o.height = 88;
-  o.spacing = 30.0;
-  o.seed = 7;
-  o.feature_size = 2500.0;
-  o.relief = 1400.0;
-  HeightField f = terrain::make_synthetic_terrain(o);
-  f.valid[static_cast<std::size_t>(40) * f.width + 50] = 0;
-  return f;
-}
+using testing::synthetic_field;
 
-// A 104 × 88 crop of the Cascades SRTM 1″ DEM (geographic: per-row dx ≈ 21 m, dy ≈ 31 m).
-bool real_dem(HeightField& out) {
-  const std::string path = std::string(SKYLIT_SHARED_DIR) + "/dem/cascades_skykomish_srtm1_4326.tif";
-  if (!std::filesystem::exists(path)) return false;
-  terrain::DemReadOptions o;
-  o.window = terrain::PixelRect{300, 130, 104, 88};
-  out = terrain::read_dem(path, o).field;
-  return true;
-}
+using testing::real_dem;
 
 ProductOptions lit_options(double azimuth_deg, double elevation_deg, const std::string& sky) {
   shading::LightingRequest r;

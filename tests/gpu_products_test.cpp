@@ -21,6 +21,8 @@
 // Every texel is compared, edges included: both paths snap cardinal headings to exact
 // zeros and count samples within shading::edge_epsilon_texels of the last row/column.
 // Runs on Mesa llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,42 +54,11 @@ constexpr double kShadedTolCodes = 1.0;
 constexpr double kShadedMinFraction = 0.99;
 constexpr double kShadedMaxCodes = 2.0;
 
-class GpuProductsTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context = std::make_unique<HeadlessContext>();
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
-  }
-  std::unique_ptr<HeadlessContext> context;
-};
+using GpuProductsTest = testing::GpuTest;
 
-// Seeded synthetic mountains (ridges and a valley) on a non-square grid, with a
-// nodata texel.
-HeightField synthetic_field() {
-  terrain::SyntheticOptions o;
-  o.width = 100;
-  o.height = 88;
-  o.spacing = 30.0;
-  o.seed = 7;
-  o.feature_size = 2500.0;
-  o.relief = 1400.0;
-  HeightField f = terrain::make_synthetic_terrain(o);
-  f.valid[static_cast<std::size_t>(40) * f.width + 50] = 0;
-  return f;
-}
+using testing::synthetic_field;
 
-// A 104 × 88 crop of the Cascades SRTM 1″ DEM (geographic: per-row dx ≈ 21 m, dy ≈ 31 m).
-bool real_dem(HeightField& out) {
-  const std::string path = std::string(SKYLIT_SHARED_DIR) + "/dem/cascades_skykomish_srtm1_4326.tif";
-  if (!std::filesystem::exists(path)) return false;
-  terrain::DemReadOptions o;
-  o.window = terrain::PixelRect{300, 130, 104, 88};
-  out = terrain::read_dem(path, o).field;
-  return true;
-}
+using testing::real_dem;
 
 struct Stats {
   double max_abs = 0.0;

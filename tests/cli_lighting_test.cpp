@@ -20,6 +20,7 @@
 
 using skylit::testing::count_lines;
 using skylit::testing::run_skylit;
+using skylit::testing::expect_clean_shade_failure;
 using namespace skylit::terrain::testing;
 
 namespace {
@@ -67,15 +68,6 @@ Raster read(const std::string& path) {
   return r;
 }
 
-void expect_clean_failure(const ScratchDir& dir, const std::string& args, const std::string& needle) {
-  const auto before = dir.listing();
-  const auto r = run_skylit("shade " + args + " -q", true);
-  EXPECT_EQ(r.status, 1) << args << "\n" << r.out;
-  EXPECT_EQ(count_lines(r.out), 1) << r.out;
-  EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
-  EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
-  EXPECT_EQ(dir.listing(), before) << "a failed run left files behind";
-}
 
 // A Radiance RGBE image (flat scan lines: widths < 8 are never run-length encoded).
 std::string make_hdr(const ScratchDir& dir, const std::string& name, int w, int h) {
@@ -91,30 +83,30 @@ TEST(CliLighting, BadLightingFailsCleanlyBeforeAnyWork) {
   ScratchDir dir;
   const std::string wall = make_wall(dir);
   const std::string out = wall + " -o " + dir.file("out.tif") + " -p irradiance --azimuths 4";
-  expect_clean_failure(dir, out + " --time yesterday", "invalid time");
-  expect_clean_failure(dir, out + " --time 2026-06-21T09:30:00", "zone");
-  expect_clean_failure(dir, out + " --time 2026-06-21T09:30:00Z --lat 95 --lon 0", "--lat 95");
-  expect_clean_failure(dir, out + " --sky hosek", "unknown --sky 'hosek'");
-  expect_clean_failure(dir, out + " --sky cie:17", "1..16");
-  expect_clean_failure(dir, out + " --sky cie:0", "1..16");
-  expect_clean_failure(dir, out + " --turbidity 40", "--turbidity");
-  expect_clean_failure(dir, out + " --sun-elevation 120", "--sun-elevation");
-  expect_clean_failure(dir, out + " --sky " + dir.file("missing.hdr"), "missing.hdr");
+  expect_clean_shade_failure(dir, out + " --time yesterday", "invalid time");
+  expect_clean_shade_failure(dir, out + " --time 2026-06-21T09:30:00", "zone");
+  expect_clean_shade_failure(dir, out + " --time 2026-06-21T09:30:00Z --lat 95 --lon 0", "--lat 95");
+  expect_clean_shade_failure(dir, out + " --sky hosek", "unknown --sky 'hosek'");
+  expect_clean_shade_failure(dir, out + " --sky cie:17", "1..16");
+  expect_clean_shade_failure(dir, out + " --sky cie:0", "1..16");
+  expect_clean_shade_failure(dir, out + " --turbidity 40", "--turbidity");
+  expect_clean_shade_failure(dir, out + " --sun-elevation 120", "--sun-elevation");
+  expect_clean_shade_failure(dir, out + " --sky " + dir.file("missing.hdr"), "missing.hdr");
   {
     std::ofstream(dir.file("garbage.hdr")) << "not an image\n";
   }
-  expect_clean_failure(dir, out + " --sky " + dir.file("garbage.hdr"), "garbage.hdr");
-  expect_clean_failure(dir, out + " --sky " + make_hdr(dir, "square.hdr", 3, 3), "width = 2 × height");
+  expect_clean_shade_failure(dir, out + " --sky " + dir.file("garbage.hdr"), "garbage.hdr");
+  expect_clean_shade_failure(dir, out + " --sky " + make_hdr(dir, "square.hdr", 3, 3), "width = 2 × height");
   // --time needs a place: a DEM without a CRS, and no --lat/--lon.
   RasterSpec no_crs;
   no_crs.width = no_crs.height = 8;
   no_crs.epsg.reset();
   no_crs.set_geotransform = false;
   const std::string nocrs = make_raster(dir.file("nocrs.tif"), no_crs);
-  expect_clean_failure(dir, nocrs + " -s 10 -o " + dir.file("o.tif") + " -p shadow --time 2026-06-21T09:30:00Z",
+  expect_clean_shade_failure(dir, nocrs + " -s 10 -o " + dir.file("o.tif") + " -p shadow --time 2026-06-21T09:30:00Z",
                        "--lat and --lon");
   // The GPU has no exact sun march: an explicit --backend gpu refuses, in one line.
-  expect_clean_failure(dir, out + " --exact --backend gpu", "--backend gpu");
+  expect_clean_shade_failure(dir, out + " --exact --backend gpu", "--backend gpu");
 }
 
 TEST(CliLighting, NoCrsWorksWithLatLonAndMapSkiesLoad) {

@@ -15,6 +15,7 @@
 
 using skylit::testing::count_lines;
 using skylit::testing::run_skylit;
+using skylit::testing::expect_clean_shade_failure;
 using namespace skylit::terrain::testing;
 
 namespace {
@@ -56,17 +57,6 @@ Opened open_output(const std::string& path) {
   return o;
 }
 
-// Expects a failure: exit 1 (bad input) or 2 (bad usage), exactly one line starting
-// "skylit: error:", no output.
-void expect_clean_failure(const ScratchDir& dir, const std::string& args, const std::string& needle) {
-  const auto before = dir.listing();
-  const auto r = run_skylit("shade " + args + " -q", true);
-  EXPECT_TRUE(r.status == 1 || r.status == 2) << args << "\n" << r.out;
-  EXPECT_EQ(count_lines(r.out), 1) << r.out;
-  EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
-  EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
-  EXPECT_EQ(dir.listing(), before) << "a failed run left files behind";
-}
 
 }  // namespace
 
@@ -130,54 +120,54 @@ TEST(CliShade, BadInputFailsCleanly) {
   ScratchDir dir;
   const std::string hill = make_hill(dir);
   const std::string out = " -o " + dir.file("out.tif");
-  expect_clean_failure(dir, dir.file("missing.tif") + out, "missing.tif");
+  expect_clean_shade_failure(dir, dir.file("missing.tif") + out, "missing.tif");
   {
     std::ofstream(dir.file("notes.txt")) << "not a raster at all\n";
-    expect_clean_failure(dir, dir.file("notes.txt") + out, "notes.txt");
+    expect_clean_shade_failure(dir, dir.file("notes.txt") + out, "notes.txt");
   }
   {
     std::ofstream f(dir.file("corrupt.tif"), std::ios::binary);
     f << "II*\0garbage that is not a TIFF directory";
   }
-  expect_clean_failure(dir, dir.file("corrupt.tif") + out, "corrupt.tif");
+  expect_clean_shade_failure(dir, dir.file("corrupt.tif") + out, "corrupt.tif");
 
   auto raster = [&](const std::string& name, RasterSpec s) { return make_raster(dir.file(name), s); };
   RasterSpec all_void;
   all_void.values.assign(16, -9999);
   all_void.nodata = -9999;
-  expect_clean_failure(dir, raster("void.tif", all_void) + out, "nodata");
+  expect_clean_shade_failure(dir, raster("void.tif", all_void) + out, "nodata");
   RasterSpec nan_h;
   nan_h.values = ramp(4, 4, 10, 1, 1);
   nan_h.values[5] = std::numeric_limits<double>::infinity();
-  expect_clean_failure(dir, raster("inf.tif", nan_h) + out, "inf.tif");
+  expect_clean_shade_failure(dir, raster("inf.tif", nan_h) + out, "inf.tif");
   RasterSpec absurd;
   absurd.values = ramp(4, 4, 10, 1, 1);
   absurd.values[3] = 25000;
-  expect_clean_failure(dir, raster("absurd.tif", absurd) + out, "absurd.tif");
+  expect_clean_shade_failure(dir, raster("absurd.tif", absurd) + out, "absurd.tif");
   RasterSpec one;
   one.width = one.height = 1;
-  expect_clean_failure(dir, raster("one.tif", one) + out, "one.tif");
+  expect_clean_shade_failure(dir, raster("one.tif", one) + out, "one.tif");
   RasterSpec strip;
   strip.width = 9;
   strip.height = 1;
-  expect_clean_failure(dir, raster("strip.tif", strip) + out, "strip.tif");
+  expect_clean_shade_failure(dir, raster("strip.tif", strip) + out, "strip.tif");
   RasterSpec rotated;
   rotated.gt = {500000, 30, 5, 4000000, 5, -30};
-  expect_clean_failure(dir, raster("rotated.tif", rotated) + out, "rotated.tif");
+  expect_clean_shade_failure(dir, raster("rotated.tif", rotated) + out, "rotated.tif");
   RasterSpec no_crs;
   no_crs.epsg.reset();
   no_crs.set_geotransform = false;
   const std::string nocrs = raster("nocrs.tif", no_crs);
-  expect_clean_failure(dir, nocrs + out, "-s/--scale");
+  expect_clean_shade_failure(dir, nocrs + out, "-s/--scale");
 
   // Output problems are found before any work.
-  expect_clean_failure(dir, hill + " -o " + dir.file("no/such/folder/out.tif"), "does not exist");
-  expect_clean_failure(dir, hill + " -o " + dir.file("out.png") + " -p svf", "PNG");
-  expect_clean_failure(dir, hill + " -o " + dir.file("out.xyz"), "format");
-  expect_clean_failure(dir, hill + out + " -p bogus", "bogus");
-  expect_clean_failure(dir, hill + out + " --backend cuda", "cuda");
-  expect_clean_failure(dir, out, "INPUT");
-  expect_clean_failure(dir, hill + " " + hill + " " + dir.file("out.tif") + " --synthetic" + out, "--synthetic");
+  expect_clean_shade_failure(dir, hill + " -o " + dir.file("no/such/folder/out.tif"), "does not exist");
+  expect_clean_shade_failure(dir, hill + " -o " + dir.file("out.png") + " -p svf", "PNG");
+  expect_clean_shade_failure(dir, hill + " -o " + dir.file("out.xyz"), "format");
+  expect_clean_shade_failure(dir, hill + out + " -p bogus", "bogus");
+  expect_clean_shade_failure(dir, hill + out + " --backend cuda", "cuda");
+  expect_clean_shade_failure(dir, out, "INPUT");
+  expect_clean_shade_failure(dir, hill + " " + hill + " " + dir.file("out.tif") + " --synthetic" + out, "--synthetic");
 }
 
 TEST(CliShade, UnknownCrsWorksOnlyWithAScale) {
@@ -198,15 +188,15 @@ TEST(CliShade, RefusesToOverwriteWithoutFlagAndFailsOnReadOnlyFolder) {
   const std::string in = make_hill(dir);
   const std::string out = dir.file("svf.tif");
   ASSERT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 4 -q").status, 0);
-  expect_clean_failure(dir, in + " -o " + out + " -p svf", "--overwrite");
+  expect_clean_shade_failure(dir, in + " -o " + out + " -p svf", "--overwrite");
   EXPECT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 4 -q --overwrite").status, 0);
   if (::geteuid() != 0) {  // root ignores folder permissions
     std::filesystem::create_directory(dir.file("ro"));
     std::filesystem::permissions(dir.file("ro"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
-    expect_clean_failure(dir, in + " -o " + dir.file("ro/out.tif"), "not writable");
+    expect_clean_shade_failure(dir, in + " -o " + dir.file("ro/out.tif"), "not writable");
   }
   // A folder nobody can create files in, root included.
-  expect_clean_failure(dir, in + " -o /proc/skylit_out.tif -p svf", "/proc/skylit_out.tif");
+  expect_clean_shade_failure(dir, in + " -o /proc/skylit_out.tif -p svf", "/proc/skylit_out.tif");
 }
 
 TEST(CliShade, HelpAndVersion) {
@@ -231,5 +221,5 @@ TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
   EXPECT_EQ(bands("--quality fast"), skylit::shading::quality_settings(skylit::shading::Quality::Fast).azimuths);
   EXPECT_EQ(bands("--quality high"), skylit::shading::quality_settings(skylit::shading::Quality::High).azimuths);
   EXPECT_EQ(bands("--quality fast --azimuths 8"), 8);
-  expect_clean_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
+  expect_clean_shade_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
 }

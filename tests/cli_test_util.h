@@ -1,6 +1,9 @@
 // Runs the built skylit binary through the shell for end-to-end CLI tests.
 #pragma once
 
+#include "terrain_test_util.h"
+
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -30,6 +33,20 @@ inline int count_lines(const std::string& s) {
   int lines = 0;
   for (char c : s) lines += c == '\n';
   return lines;
+}
+
+// Expects `skylit shade ARGS -q` to fail cleanly: exit 1 (bad input) or 2 (bad usage),
+// exactly one line starting "skylit: error:" that contains `needle`, and no file left
+// behind in `dir`.
+inline void expect_clean_shade_failure(const terrain::testing::ScratchDir& dir, const std::string& args,
+                                       const std::string& needle) {
+  const auto before = dir.listing();
+  const auto r = run_skylit("shade " + args + " -q", true);
+  EXPECT_TRUE(r.status == 1 || r.status == 2) << args << "\n" << r.out;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
+  EXPECT_EQ(dir.listing(), before) << "a failed run left files behind";
 }
 
 }  // namespace skylit::testing

@@ -399,7 +399,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     }
     first_distance = marcher.distance(0);
     if (mOptions.march.use_pyramid) {
-      const terrain::HeightPyramid pyramid(field, terrain::PyramidOptions{.k_v = mOptions.march.k_v});
+      const terrain::HeightPyramid& pyramid = marcher.pyramid();
       for (int l = 0; l < pyramid.levels(); ++l) {
         const terrain::PyramidLevel& lv = pyramid.level(l);
         const float scale[4] = {static_cast<float>(lv.step_x), static_cast<float>(lv.step_y), 0.0f, 0.0f};

@@ -67,6 +67,9 @@ class HorizonMarcher {
   int level_of_step(int s) const { return levels_[s]; }
   double max_distance() const { return distances_.back(); }
   const MarchOptions& options() const { return options_; }
+  // The B-spline pyramid the march samples (empty when use_pyramid is off); the GPU
+  // path uploads this one instead of building its own.
+  const terrain::HeightPyramid& pyramid() const { return pyramid_; }
 
  private:
   double height_at(int step, GridPoint p) const;

@@ -291,7 +291,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       shading::ShadingSettings settings;
       settings.order = s.sh_order;
       shading::SkyInput sky_input;
-      sky_input.radiance = [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+      sky_input.radiance = shading::uniform_sky_radiance();
       shader.emplace(settings, sky_input);
     }
     const shading::SkyBrdfTable* first_table = lit ? (lit_tables.empty() ? nullptr : lit_tables[0])

@@ -218,8 +218,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
     if (lit)
       lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
     else
-      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order,
-                                                 [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; });
+      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order, uniform_sky_radiance());
   }
   // Tone map of the lit `shaded` (lighting.h): E → linear display value.
   const double display_per_irradiance =
@@ -297,6 +296,10 @@ Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, in
 
 double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting) {
   return shaded.exposure * kShadedKey * shaded.albedo / lighting.reference_irradiance;
+}
+
+Radiance uniform_sky_radiance() {
+  return [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
 }
 
 }  // namespace skylit::shading

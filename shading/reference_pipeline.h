@@ -44,6 +44,8 @@ class HorizonOracle {
 // broadband luminance); and the tone map factor of lit `shaded` (lighting.h):
 // code = sRGB(E · shaded_display_scale).
 SunShadowOptions sun_shadow_options(const ProductOptions& options);
+// The sky of unlit `shaded`: uniform radiance 1 above the horizontal, 0 below.
+Radiance uniform_sky_radiance();
 Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, int channel);
 double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting);
 

@@ -38,6 +38,7 @@ struct ShadeArgs {
   shading::ProductOptions options;  // defaults come from the library
   std::string quality = "default";
   std::string shading_mode = "table";
+  std::string wedge = "linear";
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -141,6 +142,14 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "(SH triple product) | log-brdf (the seed's log-SH BRDF; errs by tens of %, docs/numerics.md)")
       ->check(CLI::IsMember({"table", "triple", "log-brdf"}))
       ->capture_default_str();
+  cmd->add_option("--wedge", args->wedge,
+                  "Wedge interpolation of the horizon slices over azimuth: linear | bspline (shaded, irradiance)")
+      ->check(CLI::IsMember({"linear", "bspline"}))
+      ->capture_default_str();
+  cmd->add_option("--subsample", args->options.subsample,
+                  "March horizons at every Nth texel and interpolate them; normals and shading stay per texel: 1 | 2 | 4")
+      ->check(CLI::IsMember({1, 2, 4}))
+      ->capture_default_str();
   cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
   cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
@@ -188,6 +197,8 @@ void add_shade_command(CLI::App& root, Action& run) {
     if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
     if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
     args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
+    args->options.shaded.wedge =
+        args->wedge == "bspline" ? sh::WedgeInterpolation::BSpline : sh::WedgeInterpolation::Linear;
     run = [args] { return run_shade(*args); };
   });
 }

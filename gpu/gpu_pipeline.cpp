@@ -174,6 +174,9 @@ bool gpu_supports(Product product, const shading::ProductOptions& options) {
   if (!known) return false;
   // Shaded and irradiance: the sky × BRDF table mode only (ShadedOptions::mode).
   if (needs_visibility(product) && options.shaded.mode != shading::ShadingMode::SkyBrdfTable) return false;
+  // Not yet on the GPU: B-spline wedges, horizon sub-sampling.
+  if (needs_visibility(product) && options.shaded.wedge != sh::WedgeInterpolation::Linear) return false;
+  if (options.subsample != 1) return false;
   if (!shading::uses_lighting(product, options)) return true;
   // Lit products: the sun's own march (not the exact one), and a lighting to use.
   return options.lighting.has_value() && !options.exact;

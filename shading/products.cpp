@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace skylit::shading {
 
@@ -35,6 +36,10 @@ std::string product_names() {
   std::string out;
   for (Product p : kProducts) out += (out.empty() ? "" : ", ") + std::string(product_name(p));
   return out;
+}
+
+void validate_subsample(int s) {
+  if (s != 1 && s != 2 && s != 4) throw std::invalid_argument("subsample must be 1, 2 or 4");
 }
 
 bool uses_lighting(Product product, const ProductOptions& options) {

@@ -33,6 +33,7 @@
 
 #include "shading/horizon_march.h"
 #include "shading/shading_modes.h"
+#include "shading/wedge.h"
 #include "shading/lighting.h"
 #include "terrain/height_field.h"
 
@@ -66,6 +67,9 @@ struct ShadedOptions {
   double exposure = 1.0;        // linear radiance multiplier before the sRGB curve
   int sh_order = 4;             // n: SH bands of the visibility
   int nlp_order = 8;            // N ≥ n (N = 2n removes most of the odd-|m| floor)
+  // Wedge interpolation of the slices over azimuth: linear (M_lin, n²×2N) or cubic
+  // B-spline (M_bspl, n²×4N), DESIGN.md step 4.
+  sh::WedgeInterpolation wedge = sh::WedgeInterpolation::Linear;
 };
 
 struct ProductOptions {
@@ -73,11 +77,18 @@ struct ProductOptions {
   bool exact = false;           // ground truth: dense half-texel march (see horizon_exact.h)
   ExactOptions exact_options;
   ShadedOptions shaded;
+  // Horizon sub-sampling s ∈ {1, 2, 4} (DESIGN.md step 4, NS09 §7): raw horizons are
+  // marched only at every s-th texel (the last row and column included) and bilinearly
+  // interpolated to the others; normals, floors, slices and shading stay per texel.
+  int subsample = 1;
   unsigned threads = 0;         // worker threads over rows; 0 = hardware concurrency
   // Sky + sun (lighting.h). Required by shadow and irradiance; for shaded it replaces
   // the uniform sky of radiance 1 (the default, kept when empty).
   std::optional<Lighting> lighting;
 };
+
+// Throws std::invalid_argument unless s is 1, 2 or 4 (ProductOptions::subsample).
+void validate_subsample(int s);
 
 // True when `product` with `options` uses the lighting (sun shadows, sky tables of a
 // lit sky): shadow, irradiance, and shaded with options.lighting set.

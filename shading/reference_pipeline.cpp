@@ -164,6 +164,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   if (w_sky < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
   if (!(options.shaded.albedo >= 0.0) || !(options.shaded.exposure > 0.0))
     throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+  validate_subsample(options.subsample);
   const bool lit = uses_lighting(product, options);
   if (lit && !options.lighting)
     throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
@@ -214,7 +215,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
   if (needs_visibility) {
     const ShadedOptions& s = options.shaded;
-    wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, sh::WedgeInterpolation::Linear);
+    wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, s.wedge);
     if (lit)
       lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
     else

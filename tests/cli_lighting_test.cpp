@@ -18,7 +18,9 @@
 #include <numbers>
 #include <vector>
 
+using Raster = skylit::testing::OutputRaster;
 using skylit::testing::count_lines;
+using skylit::testing::read_output;
 using skylit::testing::run_skylit;
 using skylit::testing::expect_clean_shade_failure;
 using namespace skylit::terrain::testing;
@@ -39,35 +41,6 @@ std::string make_wall(const ScratchDir& dir) {
     for (int i = 5; i < 8; ++i) s.values[j * 61 + i] = 100.0;
   return make_raster(dir.file("wall.tif"), s);
 }
-
-struct Raster {
-  int w = 0, h = 0, bands = 0;
-  std::vector<float> v;  // band-major
-  float at(int b, int i, int j) const { return v[(static_cast<std::size_t>(b) * h + j) * w + i]; }
-  double mean(int b = 0) const {
-    double s = 0;
-    for (int k = 0; k < w * h; ++k) s += v[static_cast<std::size_t>(b) * w * h + k];
-    return s / (w * h);
-  }
-};
-
-Raster read(const std::string& path) {
-  ensure_gdal();
-  Raster r;
-  GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
-  if (!ds) return r;
-  r.w = ds->GetRasterXSize();
-  r.h = ds->GetRasterYSize();
-  r.bands = ds->GetRasterCount();
-  r.v.resize(static_cast<std::size_t>(r.w) * r.h * r.bands);
-  for (int b = 0; b < r.bands; ++b)
-    if (ds->GetRasterBand(b + 1)->RasterIO(GF_Read, 0, 0, r.w, r.h, r.v.data() + static_cast<std::size_t>(b) * r.w * r.h,
-                                           r.w, r.h, GDT_Float32, 0, 0, nullptr) != CE_None)
-      r.v.clear();
-  GDALClose(GDALDataset::ToHandle(ds));
-  return r;
-}
-
 
 // A Radiance RGBE image (flat scan lines: widths < 8 are never run-length encoded).
 std::string make_hdr(const ScratchDir& dir, const std::string& name, int w, int h) {
@@ -127,7 +100,7 @@ TEST(CliLighting, NoCrsWorksWithLatLonAndMapSkiesLoad) {
                                 make_hdr(dir, "sky.hdr", 4, 2) + " --sky-scale 2",
                             true);
   ASSERT_EQ(m.status, 0) << m.out;
-  EXPECT_NEAR(read(dir.file("m.tif")).at(0, 1, 1), 2 * std::numbers::pi, 0.03 * 2 * std::numbers::pi);
+  EXPECT_NEAR(read_output(dir.file("m.tif")).at(0, 1, 1), 2 * std::numbers::pi, 0.03 * 2 * std::numbers::pi);
 }
 
 TEST(CliLighting, ShadowProductBehindAWallWithGdaldemAngles) {
@@ -142,7 +115,7 @@ TEST(CliLighting, ShadowProductBehindAWallWithGdaldemAngles) {
   const std::string out = dir.file("shadow.tif");
   const auto r = run_skylit("shade " + wall + " -o " + out + " -p shadow --exact --no-curvature -q" + angles, true);
   ASSERT_EQ(r.status, 0) << r.out;
-  const Raster s = read(out);
+  const Raster s = read_output(out);
   ASSERT_EQ(s.bands, 1);
   EXPECT_NEAR(s.at(0, i, c), skylit::shading::sun_disc_fraction(e, sigma, 0.0), 2e-3);
   EXPECT_EQ(s.at(0, 30, 2), 1.0f);  // north of the wall's end: open
@@ -153,7 +126,7 @@ TEST(CliLighting, ShadowProductBehindAWallWithGdaldemAngles) {
                                 std::to_string(e / kDeg),
                             true);
   ASSERT_EQ(l.status, 0) << l.out;
-  EXPECT_NEAR(read(dir.file("l.tif")).at(0, i, c), s.at(0, i, c), 1e-3);
+  EXPECT_NEAR(read_output(dir.file("l.tif")).at(0, i, c), s.at(0, i, c), 1e-3);
 }
 
 TEST(CliLighting, TimeUsesTheDemsCentreAndShadowsMoveWithTheSun) {
@@ -179,7 +152,7 @@ TEST(CliLighting, TimeUsesTheDemsCentreAndShadowsMoveWithTheSun) {
   const std::string args = " -p shadow --azimuths 8 -q --time ";
   ASSERT_EQ(run_skylit("shade " + wall + " -o " + evening + args + "2026-06-21T19:00:00-07:00").status, 0);
   ASSERT_EQ(run_skylit("shade " + wall + " -o " + noon + args + "2026-06-21T13:00:00-07:00").status, 0);
-  const Raster ev = read(evening), nn = read(noon);
+  const Raster ev = read_output(evening), nn = read_output(noon);
   EXPECT_EQ(ev.at(0, 10, 40), 0.0f);
   EXPECT_EQ(nn.at(0, 10, 40), 1.0f);
   EXPECT_LT(ev.mean(), nn.mean());
@@ -192,8 +165,8 @@ TEST(CliLighting, TimeUsesTheDemsCentreAndShadowsMoveWithTheSun) {
                                                {place->latitude_deg, place->longitude_deg, 0.0});
   const double el = sun.apparent_elevation_deg * kDeg;
   const double open = skylit::sky::esra_diffuse_horizontal(el, 3.0) + skylit::sky::broadband_dni(el, 3.0) * std::sin(el);
-  EXPECT_NEAR(read(e1).at(0, 50, 58), open, 0.01 * open);  // open ground at 13:00 PDT
-  EXPECT_LT(read(e2).at(0, 50, 58), 0.5 * open);
+  EXPECT_NEAR(read_output(e1).at(0, 50, 58), open, 0.01 * open);  // open ground at 13:00 PDT
+  EXPECT_LT(read_output(e2).at(0, 50, 58), 0.5 * open);
 }
 
 TEST(CliLighting, ShadedIsGreyForUniformRgbForColourSkiesAndSkyOnlyKeepsTheClassic) {
@@ -204,7 +177,7 @@ TEST(CliLighting, ShadedIsGreyForUniformRgbForColourSkiesAndSkyOnlyKeepsTheClass
   auto shade = [&](const std::string& name, const std::string& extra) {
     const auto r = run_skylit("shade " + in + " -o " + dir.file(name) + " --azimuths 8 -q" + extra, true);
     EXPECT_EQ(r.status, 0) << r.out;
-    return read(dir.file(name));
+    return read_output(dir.file(name));
   };
   const Raster classic = shade("classic.png", " --no-sun");
   ASSERT_EQ(classic.bands, 1);

@@ -14,6 +14,8 @@
 #include <limits>
 
 using skylit::testing::count_lines;
+using skylit::testing::OutputRaster;
+using skylit::testing::read_output;
 using skylit::testing::run_skylit;
 using skylit::testing::expect_clean_shade_failure;
 using namespace skylit::terrain::testing;
@@ -32,31 +34,6 @@ std::string make_hill(const ScratchDir& dir, const std::string& name = "hill.tif
   return make_raster(dir.file(name), s);
 }
 
-struct Opened {
-  int w = 0, h = 0, bands = 0;
-  GDALDataType type = GDT_Unknown;
-  std::array<double, 6> gt{};
-  std::string wkt;
-  int has_nodata = 0;
-  double nodata = 0;
-};
-
-Opened open_output(const std::string& path) {
-  ensure_gdal();
-  Opened o;
-  GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
-  if (!ds) return o;
-  o.w = ds->GetRasterXSize();
-  o.h = ds->GetRasterYSize();
-  o.bands = ds->GetRasterCount();
-  o.type = ds->GetRasterBand(1)->GetRasterDataType();
-  ds->GetGeoTransform(o.gt.data());
-  if (ds->GetSpatialRef()) o.wkt = ds->GetSpatialRef()->GetName();
-  o.nodata = ds->GetRasterBand(1)->GetNoDataValue(&o.has_nodata);
-  GDALClose(GDALDataset::ToHandle(ds));
-  return o;
-}
-
 
 }  // namespace
 
@@ -67,7 +44,7 @@ TEST(CliShade, EveryProductKeepsGeoreferencing) {
     const std::string out = dir.file(product + (product == "shaded" ? ".png" : ".tif"));
     const auto r = run_skylit("shade " + in + " -o " + out + " --product " + product + " --azimuths 8 -q", true);
     ASSERT_EQ(r.status, 0) << r.out;
-    const Opened o = open_output(out);
+    const OutputRaster o = read_output(out);
     EXPECT_EQ(o.w, 24);
     EXPECT_EQ(o.h, 20);
     EXPECT_EQ(o.bands, product == "horizon" ? 8 : 1);
@@ -76,7 +53,7 @@ TEST(CliShade, EveryProductKeepsGeoreferencing) {
       EXPECT_DOUBLE_EQ(o.gt[0], 500000);
       EXPECT_DOUBLE_EQ(o.gt[1], 30);
       EXPECT_DOUBLE_EQ(o.gt[3], 4000000);
-      EXPECT_NE(o.wkt.find("UTM zone 11N"), std::string::npos) << o.wkt;
+      EXPECT_NE(o.crs_name.find("UTM zone 11N"), std::string::npos) << o.crs_name;
     }
   }
 }
@@ -91,12 +68,10 @@ TEST(CliShade, NodataIsKeptInOutputs) {
   const std::string in = make_raster(dir.file("void.tif"), s);
   const std::string out = dir.file("svf.tif");
   ASSERT_EQ(run_skylit("shade " + in + " -o " + out + " -p svf --azimuths 8 -q").status, 0);
-  const Opened o = open_output(out);
+  const OutputRaster o = read_output(out);
   ASSERT_TRUE(o.has_nodata);
-  GDALDataset* ds = GDALDataset::Open(out.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
-  float v[16 * 16];
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 16, 16, v, 16, 16, GDT_Float32, 0, 0, nullptr), CE_None);
-  GDALClose(GDALDataset::ToHandle(ds));
+  ASSERT_EQ(o.w, 16);
+  const std::vector<float>& v = o.v;
   int nodata = 0;
   for (int k = 0; k < 256; ++k) {
     if (v[k] == static_cast<float>(o.nodata)) ++nodata;
@@ -111,7 +86,7 @@ TEST(CliShade, BuiltInSceneWritesPng) {
   const std::string out = dir.file("default.png");
   const auto r = run_skylit("shade --synthetic --size 64 --azimuths 8 -o " + out + " -q", true);
   ASSERT_EQ(r.status, 0) << r.out;
-  const Opened o = open_output(out);
+  const OutputRaster o = read_output(out);
   EXPECT_EQ(o.w, 64);
   EXPECT_EQ(o.type, GDT_Byte);
 }
@@ -215,7 +190,7 @@ TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
     const std::string out = dir.file("h.tif");
     const auto r = run_skylit("shade " + in + " -o " + out + " -p horizon --overwrite -q " + extra, true);
     EXPECT_EQ(r.status, 0) << r.out;
-    return open_output(out).bands;
+    return read_output(out).bands;
   };
   // Azimuth counts of the presets, from the library (shading/quality.h).
   EXPECT_EQ(bands("--quality fast"), skylit::shading::quality_settings(skylit::shading::Quality::Fast).azimuths);

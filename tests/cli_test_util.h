@@ -3,12 +3,14 @@
 
 #include "terrain_test_util.h"
 
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace skylit::testing {
 
@@ -27,6 +29,45 @@ inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
   while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
   const int raw = pclose(pipe);
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+// An output raster as the CLI wrote it, read back through GDAL: size, type of band 1,
+// georeferencing, nodata and every band as float (band-major). w = 0 if unreadable.
+struct OutputRaster {
+  int w = 0, h = 0, bands = 0;
+  GDALDataType type = GDT_Unknown;
+  std::array<double, 6> gt{};
+  std::string crs_name;
+  int has_nodata = 0;
+  double nodata = 0;
+  std::vector<float> v;
+  float at(int b, int i, int j) const { return v[(static_cast<std::size_t>(b) * h + j) * w + i]; }
+  double mean(int b = 0) const {
+    double s = 0;
+    for (int k = 0; k < w * h; ++k) s += v[static_cast<std::size_t>(b) * w * h + k];
+    return s / (w * h);
+  }
+};
+
+inline OutputRaster read_output(const std::string& path) {
+  terrain::testing::ensure_gdal();
+  OutputRaster r;
+  GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+  if (!ds) return r;
+  r.w = ds->GetRasterXSize();
+  r.h = ds->GetRasterYSize();
+  r.bands = ds->GetRasterCount();
+  r.type = ds->GetRasterBand(1)->GetRasterDataType();
+  ds->GetGeoTransform(r.gt.data());
+  if (ds->GetSpatialRef()) r.crs_name = ds->GetSpatialRef()->GetName();
+  r.nodata = ds->GetRasterBand(1)->GetNoDataValue(&r.has_nodata);
+  r.v.resize(static_cast<std::size_t>(r.w) * r.h * r.bands);
+  for (int b = 0; b < r.bands; ++b)
+    if (ds->GetRasterBand(b + 1)->RasterIO(GF_Read, 0, 0, r.w, r.h, r.v.data() + static_cast<std::size_t>(b) * r.w * r.h,
+                                           r.w, r.h, GDT_Float32, 0, 0, nullptr) != CE_None)
+      r.w = 0;
+  GDALClose(GDALDataset::ToHandle(ds));
+  return r;
 }
 
 inline int count_lines(const std::string& s) {

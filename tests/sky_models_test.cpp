@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "hemisphere_quadrature.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -22,15 +24,7 @@ constexpr double kDeg = kPi / 180.0;
 template <class F>
 double midpoint_cos_integral(const F& f, int nt = 600, int np = 1200) {
   double s = 0.0;
-  const double dt = kPi / 2 / nt, dp = 2 * kPi / np;
-  for (int i = 0; i < nt; ++i) {
-    const double t = (i + 0.5) * dt;
-    for (int j = 0; j < np; ++j) {
-      const double p = (j + 0.5) * dp;
-      const glm::dvec3 d(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-      s += f(d) * std::cos(t) * std::sin(t) * dt * dp;
-    }
-  }
+  skylit::testing::for_each_upper_hemisphere_cell(nt, np, [&](const glm::dvec3& d, double dw) { s += f(d) * d.z * dw; });
   return s;
 }
 }  // namespace

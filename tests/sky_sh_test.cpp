@@ -12,6 +12,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "hemisphere_quadrature.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -28,18 +30,12 @@ RgbSh midpoint_projection(const SkyModel& sky, int order, int nt, int np) {
   RgbSh out;
   const int nc = sh::num_coeffs(order);
   for (auto& v : out.c) v.assign(nc, 0.0);
-  const double dt = kPi / 2 / nt, dp = 2 * kPi / np;
-  for (int i = 0; i < nt; ++i) {
-    const double t = (i + 0.5) * dt;
-    for (int j = 0; j < np; ++j) {
-      const double p = (j + 0.5) * dp;
-      const glm::dvec3 d(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-      const Rgb L = sky.radiance(d) * (std::sin(t) * dt * dp);
-      const sh::Vec y = sh::eval_basis(order, d);
-      for (int c = 0; c < 3; ++c)
-        for (int i = 0; i < nc; ++i) out.c[c][i] += L[c] * y[i];
-    }
-  }
+  skylit::testing::for_each_upper_hemisphere_cell(nt, np, [&](const glm::dvec3& d, double dw) {
+    const Rgb L = sky.radiance(d) * dw;
+    const sh::Vec y = sh::eval_basis(order, d);
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < nc; ++i) out.c[c][i] += L[c] * y[i];
+  });
   return out;
 }
 

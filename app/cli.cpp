@@ -15,6 +15,7 @@ int run_cli(int argc, char** argv) {
   add_shade_command(root, run);
   add_sun_command(root, run);
   add_bench_command(root, run);
+  add_scene_command(root, run);
   try {
     // CLI11 wants argv in reverse order when given as a vector.
     std::vector<std::string> args = normalise_gdal_style_args(argc, argv);

@@ -13,6 +13,7 @@ using Action = std::function<int()>;
 void add_shade_command(CLI::App& root, Action& run);
 void add_sun_command(CLI::App& root, Action& run);
 void add_bench_command(CLI::App& root, Action& run);
+void add_scene_command(CLI::App& root, Action& run);
 
 // Runs the CLI: parses, dispatches, turns exceptions into one-line errors.
 int run_cli(int argc, char** argv);

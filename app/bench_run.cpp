@@ -45,10 +45,10 @@ std::optional<Truth> compute_truth(const BenchScene& scene, const BenchConfig& c
   note("ground truth for " + scene.name + " " + scene.size() + ": brute force on " + config.truth_backend + estimate +
        " …");
   const shading::ProductOptions options = truth_options(config.threads);
-  double ms_skyview = 0, ms_shaded = 0;
-  Truth truth{timing.compute(scene.field, Product::Skyview, options, ms_skyview),
-              timing.compute(scene.field, Product::Shaded, options, ms_shaded)};
-  const double seconds = (ms_skyview + ms_shaded) / 1000.0;
+  FrameTime skyview_time, shaded_time;
+  Truth truth{timing.compute(scene.field, Product::Skyview, options, skyview_time),
+              timing.compute(scene.field, Product::Shaded, options, shaded_time)};
+  const double seconds = (skyview_time.wall_ms + shaded_time.wall_ms) / 1000.0;
   note("ground truth for " + scene.name + " " + scene.size() + ": " + format_duration(seconds));
   if (!measured || side > measured->first) measured = std::pair{side, seconds};
   return truth;
@@ -75,32 +75,50 @@ double estimate_truth_seconds(int width, int height, unsigned threads,
 }
 
 std::vector<BenchRow> run_scene(const BenchScene& scene, const std::vector<BenchSetting>& settings,
-                                const BenchConfig& config, TimingSource& timing, const std::string& backend,
-                                TimingSource& truth_timing, std::optional<std::pair<int, double>>& measured_truth,
-                                const RowCallback& on_row, const NoteCallback& note) {
+                                const BenchConfig& config, TimingSource& timing, TimingSource& truth_timing,
+                                std::optional<std::pair<int, double>>& measured_truth, const RowCallback& on_row,
+                                const NoteCallback& note) {
   const std::optional<Truth> truth = compute_truth(scene, config, truth_timing, measured_truth, note);
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   std::vector<BenchRow> rows;
   for (const BenchSetting& s : settings) {
     const shading::ProductOptions options = options_for(s, config.threads);
-    BenchRow row{scene.name, scene.size(), backend, std::string(timing.clock()), s, {}, {kNaN, kNaN}, {kNaN, kNaN}};
-    std::vector<double> samples;
+    BenchRow row{scene.name, scene.size(), std::string(timing.backend()), "NA", s, {kNaN, kNaN, kNaN}, kNaN,
+                 {kNaN, kNaN}, {kNaN, kNaN}, std::nullopt};
+    // Skipped, not timed on another backend: the rows of one run share a backend.
+    if (const auto why = timing.lacks(Product::Shaded, options)) {
+      row.skipped = *why;
+      note(s.label() + " skipped on " + row.backend + ": " + *why);
+      on_row(row);
+      rows.push_back(row);
+      continue;
+    }
+    std::vector<FrameTime> runs;
     shading::ProductBands shaded;
     for (int r = 0; r < config.warmup + config.runs; ++r) {
-      double ms = 0;
-      shaded = timing.compute(scene.field, Product::Shaded, options, ms);
-      if (r >= config.warmup) samples.push_back(ms);
+      FrameTime t;
+      shaded = timing.compute(scene.field, Product::Shaded, options, t);
+      if (r >= config.warmup) runs.push_back(t);
     }
-    row.frame_ms = time_stats(samples);
+    ClockedTimes times = timing.frame_times(runs);
+    row.clock = times.clock;
+    row.frame_ms = time_stats(std::move(times.ms));
+    std::vector<double> walls;
+    for (const FrameTime& t : runs) walls.push_back(t.wall_ms);
+    row.wall_ms_median = time_stats(walls).median;
     if (truth) {
       row.shaded = error_stats(shaded, truth->shaded);
       // skyview depends on the march only: reuse the error of an earlier equal march.
-      const auto same = std::find_if(rows.begin(), rows.end(), [&](const BenchRow& r) { return r.setting.same_march(s); });
+      const auto same = std::find_if(rows.begin(), rows.end(), [&](const BenchRow& r) {
+        return !r.skipped && r.setting.same_march(s);
+      });
       if (same != rows.end()) {
         row.skyview = same->skyview;
+      } else if (const auto why = timing.lacks(Product::Skyview, options)) {
+        note(s.label() + ": skyview error NA on " + row.backend + ": " + *why);
       } else {
-        double ms = 0;
-        row.skyview = error_stats(timing.compute(scene.field, Product::Skyview, options, ms), truth->skyview);
+        FrameTime t;
+        row.skyview = error_stats(timing.compute(scene.field, Product::Skyview, options, t), truth->skyview);
       }
     }
     on_row(row);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "app/bench_sweep.h"
+#include "app/bench_timing.h"
 
 #include <functional>
 #include <optional>
@@ -31,12 +32,15 @@ struct BenchConfig {
 
 // One line of the table / CSV. The time is that of the `shaded` product, the frame
 // the renderer draws (its horizon march is the same as skyview's and dominates);
-// errors are NaN without ground truth.
+// errors are NaN without ground truth. A setting the backend lacks is skipped: its
+// times and errors are NaN and `skipped` says why.
 struct BenchRow {
   std::string scene, size, backend, clock;
   BenchSetting setting;
   TimeStats frame_ms;
+  double wall_ms_median = 0;  // wall clock of the whole call (read-back, CPU stages included)
   ErrorStats skyview, shaded;
+  std::optional<std::string> skipped;
 };
 
 // Seconds the brute-force truth (skyview + shaded) would take on the reference
@@ -49,12 +53,12 @@ double estimate_truth_seconds(int width, int height, unsigned threads,
 using RowCallback = std::function<void(const BenchRow&)>;
 using NoteCallback = std::function<void(const std::string&)>;  // one-line notes for stderr
 
-// `timing` times the settings on `backend`; `truth` computes the ground truth on
+// `timing` times the settings on its backend; `truth` computes the ground truth on
 // config.truth_backend; `measured_truth` carries the calibration of
 // estimate_truth_seconds from scene to scene.
 std::vector<BenchRow> run_scene(const BenchScene& scene, const std::vector<BenchSetting>& settings,
-                                const BenchConfig& config, TimingSource& timing, const std::string& backend,
-                                TimingSource& truth, std::optional<std::pair<int, double>>& measured_truth,
+                                const BenchConfig& config, TimingSource& timing, TimingSource& truth,
+                                std::optional<std::pair<int, double>>& measured_truth,
                                 const RowCallback& on_row, const NoteCallback& note);
 
 }  // namespace skylit::app

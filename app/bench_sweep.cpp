@@ -1,14 +1,11 @@
 #include "app/bench_sweep.h"
 
-#include "app/backend.h"
 #include "shading/sh_basis.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <time.h>
 #include <stdexcept>
 
 namespace skylit::app {
@@ -19,12 +16,20 @@ const std::vector<int> kAzimuths = {8, 16, 32, 64};
 const std::vector<int> kKv = {2, 4, 8};
 const std::vector<double> kLevelOffsets = {1, 2, 3};
 const std::vector<int> kShOrders = {2, 3, 4};
+const std::vector<int> kSubsamples = {4, 2, 1};  // cheapest first, like the others
+using Wedge = sh::WedgeInterpolation;
+const std::vector<Wedge> kWedges = {Wedge::Linear, Wedge::BSpline};
 
-BenchSetting make_setting(int w, int k_v, double o_v, int n) { return {w, k_v, o_v, n, 2 * n, std::nullopt}; }
+BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge) {
+  return {w, k_v, o_v, n, 2 * n, s, wedge, std::nullopt};
+}
 
+// Read back through apply_quality, so that every knob a preset sets is honoured.
 BenchSetting preset_setting(shading::Quality q) {
-  const shading::QualitySettings s = shading::quality_settings(q);
-  return {s.azimuths, s.k_v, s.level_offset, s.sh_order, s.nlp_order, q};
+  shading::ProductOptions o;
+  shading::apply_quality(q, o);
+  return {o.march.azimuths, o.march.k_v, o.march.level_offset, o.shaded.sh_order, o.shaded.nlp_order,
+          o.subsample, o.shaded.wedge, q};
 }
 
 // Appends s unless an equal setting is already there.
@@ -32,16 +37,29 @@ void add_unique(std::vector<BenchSetting>& list, const BenchSetting& s) {
   if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
 }
 
-BenchSetting lowest() { return make_setting(kAzimuths.front(), kKv.front(), kLevelOffsets.front(), kShOrders.front()); }
-BenchSetting highest() { return make_setting(kAzimuths.back(), kKv.back(), kLevelOffsets.back(), kShOrders.back()); }
+BenchSetting lowest() {
+  return make_setting(kAzimuths.front(), kKv.front(), kLevelOffsets.front(), kShOrders.front(), kSubsamples.front(),
+                      kWedges.front());
+}
+BenchSetting highest() {
+  return make_setting(kAzimuths.back(), kKv.back(), kLevelOffsets.back(), kShOrders.back(), kSubsamples.back(),
+                      kWedges.back());
+}
 
 std::vector<BenchSetting> default_sweep() {
   const BenchSetting d = preset_setting(shading::Quality::Default);
   std::vector<BenchSetting> list = {lowest()};
-  for (int w : kAzimuths) add_unique(list, make_setting(w, d.k_v, d.level_offset, d.sh_order));
-  for (int k : kKv) add_unique(list, make_setting(d.azimuths, k, d.level_offset, d.sh_order));
-  for (double o : kLevelOffsets) add_unique(list, make_setting(d.azimuths, d.k_v, o, d.sh_order));
-  for (int n : kShOrders) add_unique(list, make_setting(d.azimuths, d.k_v, d.level_offset, n));
+  auto around = [&](BenchSetting s) {  // d with one knob changed; N = 2n as in the grid
+    s.nlp_order = 2 * s.sh_order;
+    s.preset.reset();
+    add_unique(list, s);
+  };
+  for (int w : kAzimuths) around({w, d.k_v, d.level_offset, d.sh_order, 0, d.subsample, d.wedge, {}});
+  for (int k : kKv) around({d.azimuths, k, d.level_offset, d.sh_order, 0, d.subsample, d.wedge, {}});
+  for (double o : kLevelOffsets) around({d.azimuths, d.k_v, o, d.sh_order, 0, d.subsample, d.wedge, {}});
+  for (int n : kShOrders) around({d.azimuths, d.k_v, d.level_offset, n, 0, d.subsample, d.wedge, {}});
+  for (int s : kSubsamples) around({d.azimuths, d.k_v, d.level_offset, d.sh_order, 0, s, d.wedge, {}});
+  for (Wedge e : kWedges) around({d.azimuths, d.k_v, d.level_offset, d.sh_order, 0, d.subsample, e, {}});
   add_unique(list, highest());
   return list;
 }
@@ -51,7 +69,9 @@ std::vector<BenchSetting> full_sweep() {
   for (int w : kAzimuths)
     for (int k : kKv)
       for (double o : kLevelOffsets)
-        for (int n : kShOrders) list.push_back(make_setting(w, k, o, n));
+        for (int n : kShOrders)
+          for (int s : kSubsamples)
+            for (Wedge e : kWedges) list.push_back(make_setting(w, k, o, n, s, e));
   return list;
 }
 
@@ -63,41 +83,6 @@ void include_presets(std::vector<BenchSetting>& list) {
     if (it != list.end()) it->preset = q;
     else list.push_back(p);
   }
-}
-
-// Milliseconds on CLOCK_PROCESS_CPUTIME_ID: every thread of the process.
-double process_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-double wall_ms() {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// Times compute_with_backend between two readings of a host clock.
-class HostClockSource final : public TimingSource {
- public:
-  HostClockSource(std::string backend, bool cpu) : backend_(std::move(backend)), cpu_(cpu) {}
-  std::string_view clock() const override { return cpu_ ? kCpuClock : kWallClock; }
-  shading::ProductBands compute(const terrain::HeightField& field, shading::Product product,
-                                const shading::ProductOptions& options, double& ms) override {
-    const double start = now();
-    auto bands = compute_with_backend(backend_, field, product, options, {});
-    ms = now() - start;
-    return bands;
-  }
-
- private:
-  double now() const { return cpu_ ? process_cpu_ms() : wall_ms(); }
-  std::string backend_;
-  bool cpu_;
-};
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
-  return text;
 }
 
 double percentile(const std::vector<double>& sorted, double p) {
@@ -113,7 +98,13 @@ std::string BenchSetting::label() const {
   std::ostringstream s;
   s << 'W' << azimuths << " kv" << k_v << " o" << level_offset << " n" << sh_order;
   if (nlp_order != 2 * sh_order) s << " N" << nlp_order;
+  if (subsample != 1) s << " s" << subsample;
+  if (wedge == sh::WedgeInterpolation::BSpline) s << " bspl";
   return s.str();
+}
+
+std::string_view wedge_name(sh::WedgeInterpolation w) {
+  return w == sh::WedgeInterpolation::BSpline ? "bspline" : "linear";
 }
 
 std::vector<std::string> sweep_names() { return {"smoke", "default", "full"}; }
@@ -141,6 +132,8 @@ shading::ProductOptions options_for(const BenchSetting& s, unsigned threads) {
   o.march.level_offset = s.level_offset;
   o.shaded.sh_order = s.sh_order;
   o.shaded.nlp_order = s.nlp_order;
+  o.shaded.wedge = s.wedge;
+  o.subsample = s.subsample;
   o.threads = threads;
   return o;
 }
@@ -152,17 +145,6 @@ shading::ProductOptions truth_options(unsigned threads) {
   o.shaded.nlp_order = 2 * sh::kMaxOrder;
   o.threads = threads;
   return o;
-}
-
-std::vector<std::string> clock_names() { return {std::string(kWallClock), std::string(kCpuClock)}; }
-
-std::unique_ptr<TimingSource> make_timing_source(const std::string& backend, const std::string& clock) {
-  const auto backends = backend_names(), clocks = clock_names();
-  if (std::find(backends.begin(), backends.end(), backend) == backends.end())
-    throw std::invalid_argument("unknown --backend '" + backend + "' (" + joined(backends) + ")");
-  if (std::find(clocks.begin(), clocks.end(), clock) == clocks.end())
-    throw std::invalid_argument("unknown --clock '" + clock + "' (" + joined(clocks) + ")");
-  return std::make_unique<HostClockSource>(backend, clock == kCpuClock);
 }
 
 TimeStats time_stats(std::vector<double> samples_ms) {

@@ -42,21 +42,21 @@ int run_bench(const BenchArgs& a) {
   if (!a.dem.empty() && a.sizes_given)
     throw std::invalid_argument("--sizes applies to the built-in scenes; a DEM is benchmarked at its own size");
   const std::vector<BenchSetting> settings = sweep_settings(a.sweep);
-  const auto timing = make_timing_source(a.backend, a.clock);
+  const auto timing = make_timing_source(a.backend, a.clock);  // "auto" resolved here, once
   const auto truth_timing = make_timing_source(a.config.truth_backend, std::string(kWallClock));
   // Fail on bad output paths before hours of work, leaving nothing behind.
   if (!a.csv.empty()) check_writable(a.csv, "CSV");
   if (!a.plot.empty()) check_writable(a.plot, "plot");
 
   std::cerr << "skylit: bench: " << settings.size() << " settings (--sweep " << a.sweep << "), " << a.config.runs
-            << " runs after " << a.config.warmup << " warm-up, backend " << a.backend << ", " << timing->clock()
-            << " clock\n";
+            << " runs after " << a.config.warmup << " warm-up, backend " << timing->backend() << ", "
+            << timing->clock() << " clock\n";
   std::vector<BenchRow> rows;
   std::optional<std::pair<int, double>> measured_truth;
   auto note = [](const std::string& line) { std::cerr << "skylit: " << line << "\n"; };
   print_table_header(std::cout);
   auto bench_one = [&](const BenchScene& scene) {
-    auto scene_rows = run_scene(scene, settings, a.config, *timing, a.backend, *truth_timing, measured_truth,
+    auto scene_rows = run_scene(scene, settings, a.config, *timing, *truth_timing, measured_truth,
                                 [](const BenchRow& r) { print_table_row(std::cout, r); }, note);
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
   };
@@ -88,7 +88,9 @@ void add_bench_command(CLI::App& root, Action& run) {
       ->check(CLI::Range(1, 100000))->capture_default_str();
   cmd->add_option("--warmup", args->config.warmup, "Untimed runs before the timed ones")
       ->check(CLI::Range(0, 100000))->capture_default_str();
-  cmd->add_option("--clock", args->clock, "wall | cpu (process CPU time, all threads: steadier on a shared machine)")
+  cmd->add_option("--clock", args->clock,
+                  "auto (gpu on the gpu backend, else wall) | wall | cpu (process CPU time, all threads: steadier "
+                  "on a shared machine) | gpu (GL timer queries; wall where the driver has none)")
       ->capture_default_str();
   cmd->add_option("--sweep", args->sweep, "smoke | default | full (every combination, for GPU machines)")
       ->capture_default_str();

@@ -135,6 +135,7 @@ std::string pareto_svg(const std::vector<BenchRow>& rows) {
   std::vector<std::pair<std::string, std::vector<const BenchRow*>>> scenes;
   std::vector<std::string> without_truth;
   for (const BenchRow& r : rows) {
+    if (r.skipped) continue;  // not timed: no point
     const std::string key = r.scene + " " + r.size + " (" + r.backend + ", " + r.clock + " clock)";
     auto it = std::find_if(scenes.begin(), scenes.end(), [&](const auto& s) { return s.first == key; });
     if (it == scenes.end()) it = scenes.insert(scenes.end(), {key, {}});

@@ -1,9 +1,12 @@
 // `skylit bench` end to end on a tiny scene: CSV layout, finite errors that fall from
 // the lowest to the highest quality setting, a valid SVG with the Pareto front, and
-// one-line errors that leave no files for bad arguments.
+// one-line errors that leave no files for bad arguments; on the gpu backend, the clock
+// column and skipped settings; run_scene's median and skipping with a scripted source.
 #include "cli_test_util.h"
 
+#include "app/bench_run.h"
 #include "app/svg_plot.h"
+#include "gpu/gl_context.h"
 #include "shading/quality.h"
 
 #include <gtest/gtest.h>
@@ -63,8 +66,8 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   std::string header;
   std::getline(lines, header);
   EXPECT_EQ(header,
-            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,preset,clock,"
-            "ms_median,ms_p10,ms_p90,skyview_rmse,skyview_max,shaded_rmse,shaded_max");
+            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,preset,clock,"
+            "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status");
   const auto columns = split(header, ',');
   auto col = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
@@ -76,6 +79,8 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
     ASSERT_EQ(row.size(), columns.size());
     EXPECT_EQ(row[col("size")], "32");
     EXPECT_EQ(row[col("clock")], "wall");
+    EXPECT_EQ(row[col("status")], "ok");
+    EXPECT_EQ(row[col("ms_median")], row[col("wall_ms_median")]);  // the wall clock is the frame clock
     EXPECT_GT(std::stod(row[col("ms_median")]), 0.0);
     EXPECT_LE(std::stod(row[col("ms_p10")]), std::stod(row[col("ms_median")]));
     EXPECT_LE(std::stod(row[col("ms_median")]), std::stod(row[col("ms_p90")]));
@@ -86,7 +91,11 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   }
   // The smoke sweep runs lowest → default → highest: a real check of the front.
   EXPECT_EQ(rows[0][col("azimuths")], "8");
+  EXPECT_EQ(rows[0][col("subsample")], "4");
+  EXPECT_EQ(rows[0][col("wedge")], "linear");
   EXPECT_EQ(rows[2][col("azimuths")], "64");
+  EXPECT_EQ(rows[2][col("subsample")], "1");
+  EXPECT_EQ(rows[2][col("wedge")], "bspline");
   EXPECT_EQ(rows[1][col("preset")], "default");
   for (const char* e : {"skyview_rmse", "shaded_rmse"}) {
     EXPECT_GT(std::stod(rows[0][col(e)]), std::stod(rows[1][col(e)])) << e;
@@ -116,6 +125,113 @@ TEST_F(CliBench, BadArgumentsGiveOneLineErrorsAndNoFiles) {
     EXPECT_NE(r.out.find("skylit: error:"), std::string::npos) << r.out;
     EXPECT_TRUE(dir_empty()) << args;
   }
+}
+
+TEST_F(CliBench, GpuSmokeSweepNamesItsClockAndSkipsWhatTheGpuLacks) {
+  try {
+    skylit::gpu::HeadlessContext probe;
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
+  }
+  const fs::path csv = dir / "g.csv";
+  const auto r = run_skylit("bench --sizes 16 --runs 2 --warmup 0 --sweep smoke --backend gpu -o " + csv.string(),
+                            /*merge_stderr=*/true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::stringstream lines(slurp(csv));
+  std::string header;
+  std::getline(lines, header);
+  const auto columns = split(header, ',');
+  auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  int rows = 0, timed = 0;
+  for (std::string line; std::getline(lines, line); ++rows) {
+    const auto row = split(line, ',');
+    ASSERT_EQ(row.size(), columns.size()) << line;
+    EXPECT_EQ(row[col("backend")], "gpu");
+    const std::string clock = row[col("clock")];
+    if (row[col("status")] == "skipped") {  // a knob the GPU pipeline lacks: named on stderr, not timed
+      EXPECT_EQ(clock, "NA");
+      EXPECT_EQ(row[col("ms_median")], "NA");
+      EXPECT_NE(r.out.find(" skipped on gpu: "), std::string::npos) << r.out;
+      continue;
+    }
+    ++timed;
+    EXPECT_EQ(row[col("status")], "ok");
+    // GPU timer queries, or the wall clock where the driver's timer reads ≈ 0 (llvmpipe).
+    EXPECT_TRUE(clock == "gpu" || clock.rfind("wall (", 0) == 0) << clock;
+    if (clock != "gpu") {
+      EXPECT_NE(clock.find(": no GPU timer)"), std::string::npos) << clock;
+    }
+    EXPECT_GT(std::stod(row[col("ms_median")]), 0.0);
+    EXPECT_GT(std::stod(row[col("wall_ms_median")]), 0.0);
+    EXPECT_TRUE(std::isfinite(std::stod(row[col("shaded_rmse")])));
+  }
+  EXPECT_EQ(rows, 3);
+  EXPECT_GE(timed, 1);  // the default preset has every knob at a value the GPU has
+}
+
+// A backend whose n-th computation takes n ms and which lacks B-spline wedges.
+class ScriptedSource final : public skylit::app::TimingSource {
+ public:
+  std::string_view backend() const override { return "scripted"; }
+  std::string clock() const override { return "script"; }
+  std::optional<std::string> lacks(skylit::shading::Product, const skylit::shading::ProductOptions& o) const override {
+    if (o.shaded.wedge == skylit::sh::WedgeInterpolation::BSpline) return "no B-spline wedges";
+    return std::nullopt;
+  }
+  skylit::shading::ProductBands compute(const skylit::terrain::HeightField& field, skylit::shading::Product,
+                                        const skylit::shading::ProductOptions&, skylit::app::FrameTime& t) override {
+    t.host_ms = t.wall_ms = static_cast<double>(++calls);
+    return {field.width, field.height, 1, std::vector<float>(field.size(), 0.5f), {"x"}};
+  }
+  skylit::app::ClockedTimes frame_times(const std::vector<skylit::app::FrameTime>& runs) const override {
+    skylit::app::ClockedTimes t{"script", {}};
+    for (const auto& r : runs) t.ms.push_back(r.host_ms);
+    return t;
+  }
+  int calls = 0;
+};
+
+TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
+  using namespace skylit::app;
+  skylit::terrain::HeightField field(4, 4, 1.0);
+  const BenchScene scene{"tiny", field};
+  BenchConfig config;
+  config.runs = 5;
+  config.warmup = 2;
+  config.truth_max_size = 0;  // no truth: timing only
+  BenchSetting linear = sweep_settings("smoke")[1], bspline = linear;
+  bspline.wedge = skylit::sh::WedgeInterpolation::BSpline;
+  ScriptedSource timing, truth;
+  std::optional<std::pair<int, double>> measured;
+  std::vector<std::string> notes;
+  const auto rows = run_scene(scene, {linear, bspline}, config, timing, truth, measured, [](const BenchRow&) {},
+                              [&](const std::string& n) { notes.push_back(n); });
+  ASSERT_EQ(rows.size(), 2u);
+  // Calls 1–2 are the warm-up; the timed runs take 3…7 ms: median 5, p10 3.4, p90 6.6.
+  EXPECT_EQ(timing.calls, config.warmup + config.runs);
+  EXPECT_EQ(rows[0].clock, "script");
+  EXPECT_DOUBLE_EQ(rows[0].frame_ms.median, 5.0);
+  EXPECT_DOUBLE_EQ(rows[0].frame_ms.p10, 3.4);
+  EXPECT_DOUBLE_EQ(rows[0].frame_ms.p90, 6.6);
+  EXPECT_FALSE(rows[0].skipped);
+  ASSERT_TRUE(rows[1].skipped.has_value());
+  EXPECT_EQ(*rows[1].skipped, "no B-spline wedges");
+  EXPECT_TRUE(std::isnan(rows[1].frame_ms.median));
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("bspl skipped on scripted: no B-spline wedges") != std::string::npos;
+  })) << "the skip is reported";
+}
+
+TEST(GpuTimer, MissingWhenItReadsZeroAgainstTheWallClock) {
+  using skylit::app::FrameTime;
+  const std::vector<FrameTime> llvmpipe = {{10, 10, 0.0}, {12, 12, 0.0}, {11, 11, 0.001}};
+  const std::vector<FrameTime> device = {{10, 10, 2.0}, {12, 12, 2.5}, {11, 11, 2.2}};
+  const std::vector<FrameTime> host_only = {{10, 10, std::nullopt}};
+  EXPECT_TRUE(skylit::app::gpu_timer_missing(llvmpipe));
+  EXPECT_FALSE(skylit::app::gpu_timer_missing(device));
+  EXPECT_TRUE(skylit::app::gpu_timer_missing(host_only));
 }
 
 TEST(QualityPresets, ParseApplyAndOrder) {

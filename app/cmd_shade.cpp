@@ -92,6 +92,7 @@ int run_shade(const ShadeArgs& a) {
   shading::LightingRequest request = a.lighting;
   request.sun = !a.no_sun;
   if (lit) shading::validate(request);  // before reading the DEM
+  shading::validate_subsample(a.options);  // --subsample with --exact
 
   const terrain::HeightField field = load_input(a);
 

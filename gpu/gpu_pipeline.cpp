@@ -15,15 +15,19 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpu/buffers.h"
 #include "gpu/compute_program.h"
 #include "gpu/gl_context.h"
 #include "gpu/gpu_products.h"
+#include "gpu/gpu_pyramid.h"
+#include "gpu/resident_field.h"
 #include "gpu/timer.h"
 #include "shading/azimuth.h"
 #include "shading/horizon_march.h"
+#include "shading/horizon_subsample.h"
 #include "shading/lighting.h"
 #include "shading/nlp.h"
 #include "shading/shading_modes.h"
@@ -52,6 +56,7 @@ enum Binding : int {
   kTable = 11,
   kShadow = 12,
   kSunSchedule = 13,
+  kCoarseSigma = 14,
 };
 
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
@@ -116,6 +121,7 @@ void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
 
 // compute_product's argument checks, before any kernel is built.
 void validate_options(Product product, const shading::ProductOptions& o) {
+  shading::validate_subsample(o);
   if (!gpu_supports(product, o))
     throw std::invalid_argument("the GPU pipeline cannot compute '" + std::string(shading::product_name(product)) +
                                 "' with these options (a lit product needs ProductOptions::lighting and "
@@ -135,22 +141,24 @@ bool sun_lit(Product product, const shading::ProductOptions& o) {
 
 // Stage 0 (lit products with a sun, and shadow): sun_shadow.comp over the whole field
 // into `shadow` (4 B/texel), in row chunks of ≤ `invocations` texels. Heights, row
-// spacing and the valid mask must be bound. Returns the GPU time (ms).
+// spacing and the valid mask must be bound; the step schedule goes to `schedule_buf`
+// (re-uploaded only when it changed: `uploaded` grows by its bytes). Returns the GPU
+// time (ms).
 double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, const shading::ProductOptions& o,
-                std::size_t invocations, Buffer& shadow) {
-  const shading::HorizonMarcher marcher(field, shading::sun_shadow_options(o).march);
+                std::size_t invocations, ResidentTable& schedule_buf, std::size_t& uploaded, Buffer& shadow) {
+  const shading::MarchSchedule steps = shading::march_schedule(field, shading::sun_shadow_options(o).march);
   std::vector<float> schedule;
-  for (int s = 0; s < marcher.steps(); ++s) {
-    schedule.push_back(static_cast<float>(marcher.distance(s)));
+  for (double t : steps.distances) {
+    schedule.push_back(static_cast<float>(t));
     schedule.push_back(0.0f);
   }
   check_storage_size(field.size() * sizeof(float), "GPU pipeline: the sun shadow");
-  Buffer schedule_buf = Buffer::from(std::span<const float>(schedule));
+  uploaded += schedule_buf.assign(schedule);
   shadow = Buffer(field.size() * sizeof(float));
-  schedule_buf.bind_storage(kSunSchedule);
+  schedule_buf.buffer().bind_storage(kSunSchedule);
   shadow.bind_storage(kShadow);
   set_grid_uniforms(sun, field);
-  sun.set_uniform("steps", marcher.steps());
+  sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
   const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
   GpuTimer timer;
   double ms = 0.0;
@@ -174,9 +182,8 @@ bool gpu_supports(Product product, const shading::ProductOptions& options) {
   if (!known) return false;
   // Shaded and irradiance: the sky × BRDF table mode only (ShadedOptions::mode).
   if (needs_visibility(product) && options.shaded.mode != shading::ShadingMode::SkyBrdfTable) return false;
-  // Not yet on the GPU: B-spline wedges, horizon sub-sampling.
-  if (needs_visibility(product) && options.shaded.wedge != sh::WedgeInterpolation::Linear) return false;
-  if (options.subsample != 1) return false;
+  // Both wedge interpolations (ShadedOptions::wedge). Sub-sampling: every s that
+  // validate_subsample accepts; the pipeline's constructor throws its message for the others.
   if (!shading::uses_lighting(product, options)) return true;
   // Lit products: the sun's own march (not the exact one), and a lighting to use.
   return options.lighting.has_value() && !options.exact;
@@ -187,6 +194,12 @@ struct GpuProductPipeline::Impl {
   std::optional<ComputeProgram> march;     // horizon_march.comp, or horizon_exact.comp with exact
   std::optional<ComputeProgram> products;  // surface_products.comp
   std::optional<ComputeProgram> sun;       // sun_shadow.comp: shadow, and lit products with a sun
+  std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
+  // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
+  // only its changed rows; the schedules only when they change.
+  ResidentField field;
+  ResidentTable schedule, sun_schedule;
+  Buffer no_levels, no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
   Buffer wedge, rotation, table;  // shaded and irradiance only (table: one per channel)
   int channels = 1;               // output bands of shaded/irradiance
@@ -243,8 +256,17 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("USE_PYRAMID", options.march.use_pyramid ? 1 : 0)
         .set("SCHEDULE_BINDING", kSchedule)
         .set("LEVELS_BINDING", kLevels)
-        .set("COEFFS_BINDING", kCoeffs);
+        .set("COEFFS_BINDING", kCoeffs)
+        .set("SUBSAMPLE", options.subsample)
+        .set("COARSE_SIGMA_BINDING", kCoarseSigma)
+        .set("VALID_BINDING", kValid);
     k.march.emplace(ComputeProgram::from_embedded("horizon_march.comp", march));
+    if (options.march.use_pyramid) {
+      k.pyramid.emplace();
+    } else {  // unused by the kernel; GL wants non-empty buffers bound
+      k.no_levels = Buffer(8 * sizeof(std::int32_t));
+      k.no_coeffs = Buffer(sizeof(float));
+    }
   }
 
   // Product kernel.
@@ -265,7 +287,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   if (options.exact) prod.set("STEP_TEXELS", options.exact_options.step_texels);
   if (needs_visibility(product)) {
     const shading::ShadedOptions& s = options.shaded;
-    const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, sh::WedgeInterpolation::Linear);
+    const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, s.wedge);
     // The reference's shading set-up, restated (reference_pipeline.cpp keeps it inside
     // compute_product): a shading::Shader in the sky × BRDF table mode, Lambert. Unlit:
     // uniform sky of radiance 1 above the horizontal. Lit (LitShading there): one
@@ -334,6 +356,9 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set_literal("NLP_OCCLUSION_FACTORS", float_array_literal(occlusion_factors))
         .set("WEDGE_ROWS", op.rows())
         .set("WEDGE_COLS", op.cols())
+        .set("WEDGE_TAPS", op.taps())
+        .set("WEDGE_FIRST_TAP", op.first_tap())
+        .set("WEDGE_LAST_TAP", op.first_tap() + op.taps() - 1)
         .set("TABLE_N_THETA", grid.n_theta)
         .set("TABLE_N_PHI", grid.n_phi)
         .set("TABLE_THETA_MAX", grid.theta_max)
@@ -361,7 +386,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
   const auto start = Clock::now();
   GpuPipelineTimings t;
-  const Impl& k = *mImpl;
+  Impl& k = *mImpl;  // compute() keeps the field resident in it (single-threaded, as GL is)
 
   const int w = field.width, h = field.height, bands = k.azimuths;
   const int out_bands = mProduct == Product::Horizon ? bands : needs_visibility(mProduct) ? k.channels : 1;
@@ -369,18 +394,13 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
 
   if (mProduct == Product::Shadow) {  // the sun pass alone
     const auto upload_start = Clock::now();
-    const std::vector<float> row_dx(field.dx_per_row.begin(), field.dx_per_row.end());
-    const std::vector<std::uint32_t> valid_words = pack_valid_bytes(field);
-    check_storage_size(texels * sizeof(float), "GPU pipeline: the heights");
-    Buffer heights = Buffer::from(std::span<const float>(field.heights));
-    Buffer dx = Buffer::from(std::span<const float>(row_dx));
-    Buffer valid = Buffer::from(std::span<const std::uint32_t>(valid_words));
-    heights.bind_storage(kHeights);
-    dx.bind_storage(kRowDx);
-    valid.bind_storage(kValid);
+    t.uploaded_bytes = k.field.sync(field);
+    k.field.heights().bind_storage(kHeights);
+    k.field.row_dx().bind_storage(kRowDx);
+    k.field.valid().bind_storage(kValid);
     t.upload_ms = ms_since(upload_start);
     Buffer shadow;
-    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, shadow);
+    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
     shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
     shadow.download(out.data.data(), texels * sizeof(float));
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
@@ -390,75 +410,82 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     return out;
   }
 
-  // Stage 1 (CPU): the marcher's step schedule and the height pyramid.
-  std::vector<float> schedule, coeffs;
-  std::vector<std::int32_t> levels;  // per level: ivec4 dims, vec4 scale (as bits)
+  // The field: resident between calls; an edited one re-uploads its changed rows only.
+  const auto upload_start = Clock::now();
+  t.uploaded_bytes = k.field.sync(field);
+  t.upload_ms = ms_since(upload_start);
+
+  // Stage 1: the marcher's step schedule (C++) and the height pyramid, built on the GPU
+  // from the resident heights (rebuilt whole on every call; its tables stay resident).
+  std::vector<float> schedule;
   double first_distance = 0.0;
   if (!mOptions.exact) {
-    const shading::HorizonMarcher marcher(field, mOptions.march);
-    for (int s = 0; s < marcher.steps(); ++s) {
-      schedule.push_back(static_cast<float>(marcher.distance(s)));
-      schedule.push_back(static_cast<float>(marcher.level_of_step(s)));
+    const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
+    for (std::size_t s = 0; s < steps.distances.size(); ++s) {
+      schedule.push_back(static_cast<float>(steps.distances[s]));
+      schedule.push_back(static_cast<float>(steps.levels[s]));
     }
-    first_distance = marcher.distance(0);
-    if (mOptions.march.use_pyramid) {
-      const terrain::HeightPyramid& pyramid = marcher.pyramid();
-      for (int l = 0; l < pyramid.levels(); ++l) {
-        const terrain::PyramidLevel& lv = pyramid.level(l);
-        const float scale[4] = {static_cast<float>(lv.step_x), static_cast<float>(lv.step_y), 0.0f, 0.0f};
-        const std::int32_t dims[4] = {lv.width, lv.height, static_cast<std::int32_t>(coeffs.size()), 0};
-        levels.insert(levels.end(), dims, dims + 4);
-        for (float f : scale) levels.push_back(std::bit_cast<std::int32_t>(f));
-        coeffs.insert(coeffs.end(), lv.coeffs.begin(), lv.coeffs.end());
-      }
-      check_storage_size(coeffs.size() * sizeof(float), "GPU pipeline: the height pyramid");
-    } else {  // unused by the kernel; GL wants non-empty buffers bound
-      coeffs.assign(1, 0.0f);
-      levels.assign(8, 0);
+    first_distance = steps.distances.front();
+    t.uploaded_bytes += k.schedule.assign(schedule);
+    if (k.pyramid) {
+      const auto pyramid_start = Clock::now();
+      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march));
+      glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
+      t.pyramid_ms = ms_since(pyramid_start);
     }
   }
-  t.pyramid_ms = ms_since(start);
 
-  // Uploads.
-  const auto upload_start = Clock::now();
-  const std::vector<float> row_dx(field.dx_per_row.begin(), field.dx_per_row.end());
-  const std::vector<std::uint32_t> valid_words = pack_valid_bytes(field);
+  // Per-chunk buffers, and every buffer bound.
   // Rows per chunk: march dispatches of ≤ mInvocationsPerDispatch invocations, and σ
   // and output buffers of that size, however large the field.
-  const int chunk = static_cast<int>(
+  int chunk = static_cast<int>(
       std::clamp<std::size_t>(mInvocationsPerDispatch / (static_cast<std::size_t>(w) * bands), 1, h));
+  // Sub-sampling: a chunk of full rows needs the coarse rows bracketing it (pass 0 of
+  // horizon_march.comp marches them). Chunks of a multiple of s rows start on coarse
+  // rows, so neighbouring chunks share one coarse row.
+  const int s = mOptions.subsample;
+  const shading::SubsampleAxis coarse_x{w, s}, coarse_y{h, s};
+  if (s > 1 && chunk < h && chunk > s) chunk -= chunk % s;
+  auto coarse_span = [&](int r0, int rows) {
+    return std::pair{coarse_y.bracket(r0).c0, coarse_y.bracket(r0 + rows - 1).c1};
+  };
+  int coarse_chunk_rows = 0;
+  if (s > 1)
+    for (int r0 = 0; r0 < h; r0 += chunk) {
+      const auto [c0, c1] = coarse_span(r0, std::min(chunk, h - r0));
+      coarse_chunk_rows = std::max(coarse_chunk_rows, c1 - c0 + 1);
+    }
+  const std::size_t coarse_bytes = static_cast<std::size_t>(coarse_chunk_rows) * coarse_x.count() * bands * sizeof(float);
   const std::size_t sigma_bytes = static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
   check_storage_size(sigma_bytes, "GPU pipeline: one row of horizon bands");
-  check_storage_size(texels * sizeof(float), "GPU pipeline: the heights");
-  Buffer heights = Buffer::from(std::span<const float>(field.heights));
-  Buffer dx = Buffer::from(std::span<const float>(row_dx));
-  Buffer valid = Buffer::from(std::span<const std::uint32_t>(valid_words));
   Buffer sigma(sigma_bytes);
+  Buffer coarse_sigma;
+  if (s > 1) {
+    check_storage_size(coarse_bytes, "GPU pipeline: the coarse horizons of a row chunk");
+    coarse_sigma = Buffer(coarse_bytes);
+    coarse_sigma.bind_storage(kCoarseSigma);
+  }
   Buffer output(static_cast<std::size_t>(chunk) * w * out_bands * sizeof(float));
-  Buffer schedule_buf, levels_buf, coeffs_buf;
-  heights.bind_storage(kHeights);
-  dx.bind_storage(kRowDx);
+  k.field.heights().bind_storage(kHeights);  // after the pyramid build, which binds its own
+  k.field.row_dx().bind_storage(kRowDx);
   k.headings.bind_storage(kHeadings);
   sigma.bind_storage(kSigma);
-  valid.bind_storage(kValid);
+  k.field.valid().bind_storage(kValid);
   output.bind_storage(kOutput);
   if (!mOptions.exact) {
-    schedule_buf = Buffer::from(std::span<const float>(schedule));
-    levels_buf = Buffer::from(std::span<const std::int32_t>(levels));
-    coeffs_buf = Buffer::from(std::span<const float>(coeffs));
-    schedule_buf.bind_storage(kSchedule);
-    levels_buf.bind_storage(kLevels);
-    coeffs_buf.bind_storage(kCoeffs);
+    k.schedule.buffer().bind_storage(kSchedule);
+    (k.pyramid ? k.pyramid->level_table() : k.no_levels).bind_storage(kLevels);
+    (k.pyramid ? k.pyramid->coeffs() : k.no_coeffs).bind_storage(kCoeffs);
   }
   if (needs_visibility(mProduct)) {
     k.wedge.bind_storage(kWedge);
     k.rotation.bind_storage(kRotation);
     k.table.bind_storage(kTable);
   }
-  t.upload_ms = ms_since(upload_start);
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   Buffer shadow;
-  if (k.sun) t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, shadow);
+  if (k.sun)
+    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
 
   // Stage 2: the march. Stage 3: the product. Row chunks bound a dispatch's length.
   const ComputeProgram& march = *k.march;
@@ -474,6 +501,10 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   } else {
     march.set_uniform("steps", static_cast<int>(schedule.size() / 2));
   }
+  if (s > 1) {
+    march.set_uniform("coarse_width", coarse_x.count());
+    march.set_uniform("coarse_chunk_rows", coarse_chunk_rows);
+  }
 
   shading::ProductBands out{w, h, out_bands, std::vector<float>(texels * out_bands), {}};
   std::vector<float> chunk_values;
@@ -483,6 +514,18 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     for (const ComputeProgram* p : {&march, &products}) {
       p->set_uniform("row_offset", r0);
       p->set_uniform("chunk_rows", chunk);
+    }
+    if (s > 1) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
+      const auto [c0, c1] = coarse_span(r0, rows);
+      march.set_uniform("coarse_row_offset", c0);
+      march.set_uniform("coarse_rows", c1 - c0 + 1);
+      march.set_uniform("march_pass", 0);
+      {
+        ScopedGpuTimer timing(march_timer);
+        march.dispatch_covering(coarse_x.count(), c1 - c0 + 1, bands);
+      }
+      t.march_ms += march_timer.elapsed_ms();
+      march.set_uniform("march_pass", 1);
     }
     {
       ScopedGpuTimer timing(march_timer);

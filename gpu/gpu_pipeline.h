@@ -8,15 +8,15 @@
 //  0. lit products with a sun, and shadow: shaders/sun_shadow.comp, the sun's own march
 //     (shading::sun_march_options() schedule from C++, level-0 bilinear heights) and
 //     the disc fraction above the horizon and tangent-plane lines (shading/sun_disc);
-//  1. height pyramid: built on the CPU (terrain::HeightPyramid, the reference's own;
-//     HorizonMarcher, which supplies the step schedule, builds a second one it does
-//     not expose), its B-spline coefficients uploaded;
+//  1. height pyramid: built on the GPU (gpu/gpu_pyramid.h, terrain::HeightPyramid's
+//     levels to float32 rounding) from the resident heights; the step schedule from
+//     shading::march_schedule;
 //  2. shaders/horizon_march.comp: multi-resolution march per texel and azimuth with
 //     the CPU marcher's own step schedule (t_s, level l_s) → raw horizons;
 //     with options.exact, shaders/horizon_exact.comp (the dense exact march) instead;
 //  3. shaders/surface_products.comp: per texel, Horn normal and the product
 //     (horizon floors, svf, exact skyview slice integrals, or NLP slices → linear
-//     wedge assembly → sky×BRDF table shading);
+//     or B-spline wedge assembly → sky×BRDF table shading);
 //     irradiance and lit shaded: π·V·T(n) per channel from the lighting's sky tables
 //     plus the sun DNI·max(n·s, 0)·shadow;
 //  4. host: read-back; shaded gets albedo, exposure (lit: lighting.h's tone map) and
@@ -42,9 +42,13 @@ namespace skylit::gpu {
 bool gpu_supports(shading::Product product, const shading::ProductOptions& options);
 
 struct GpuPipelineTimings {
-  double pyramid_ms = 0.0;   // CPU: pyramid build, schedule
+  double pyramid_ms = 0.0;   // GPU pyramid build, wall clock to glFinish (0 without one)
   double sun_ms = 0.0;       // GPU timer: the sun shadow pass (lit products, shadow)
-  double upload_ms = 0.0;    // buffers to the GPU
+  double upload_ms = 0.0;    // the height field to the GPU (wall clock)
+  // Bytes sent to the GPU by this compute(): heights, valid mask, row spacing (only the
+  // edited rows of a resident field, gpu/resident_field.h), and the step schedules and
+  // pyramid tables where they changed.
+  std::size_t uploaded_bytes = 0;
   double march_ms = 0.0;     // GPU timer (Mesa llvmpipe reports ~0 for compute)
   double products_ms = 0.0;  // GPU timer
   double wall_ms = 0.0;      // whole compute(), read-back included
@@ -70,6 +74,9 @@ class GpuProductPipeline {
   void set_invocations_per_dispatch(std::size_t n) { mInvocationsPerDispatch = n; }
   const shading::ProductOptions& options() const { return mOptions; }
 
+  // The field stays resident on the GPU until the next call: the same HeightField
+  // object after one edit (terrain/editing.h) re-uploads only the edited rows
+  // (gpu/resident_field.h says how the field is recognised); any other is uploaded whole.
   // Nodata texels are NaN. Throws std::runtime_error if the field exceeds the GPU's
   // storage-buffer limits (split it into tiles with a halo). `progress` is called with
   // the fraction of rows done, from the calling thread.

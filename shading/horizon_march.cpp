@@ -31,30 +31,38 @@ double tangent_plane_floor(const glm::dvec3& n, Heading u) {
   return -std::atan((n.x * u.east + n.y * u.north) / n.z);
 }
 
-HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options)
-    : field_(field), options_(options) {
-  validate(options_);
-  const double d_max = resolved_max_distance(field_, options_);
-  const double texel = min_texel_size(field_);
-  const int n_v = options_.levels > 0 ? options_.levels : auto_march_levels(d_max, texel, options_.k_v);
-  int top_level = 0;
-  if (options_.use_pyramid) {
-    pyramid_.build(field_, terrain::PyramidOptions{.k_v = options_.k_v});
-    top_level = pyramid_.levels() - 1;
-  }
-  distances_.resize(n_v);
-  levels_.resize(n_v);
+terrain::PyramidOptions march_pyramid_options(const MarchOptions& options) {
+  return terrain::PyramidOptions{.k_v = options.k_v};
+}
+
+MarchSchedule march_schedule(const terrain::HeightField& field, const MarchOptions& options) {
+  validate(options);
+  const double d_max = resolved_max_distance(field, options);
+  const double texel = min_texel_size(field);
+  const int n_v = options.levels > 0 ? options.levels : auto_march_levels(d_max, texel, options.k_v);
+  const int top_level =
+      options.use_pyramid ? terrain::pyramid_level_count(field.width, field.height, march_pyramid_options(options)) - 1
+                          : 0;
+  MarchSchedule out;
+  out.distances.resize(n_v);
+  out.levels.resize(n_v);
   for (int s = 0; s < n_v; ++s) {
-    const double t = d_max * std::exp2(-static_cast<double>(n_v - 1 - s) / options_.k_v);
-    distances_[s] = t;
-    const double level = options_.k_v * (std::log2(t / texel) - options_.level_offset);
-    levels_[s] = std::clamp(static_cast<int>(std::lround(level)), 0, top_level);
+    const double t = d_max * std::exp2(-static_cast<double>(n_v - 1 - s) / options.k_v);
+    out.distances[s] = t;
+    const double level = options.k_v * (std::log2(t / texel) - options.level_offset);
+    out.levels[s] = std::clamp(static_cast<int>(std::lround(level)), 0, top_level);
   }
+  return out;
+}
+
+HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options)
+    : field_(field), options_(options), schedule_(march_schedule(field, options)) {
+  if (options_.use_pyramid) pyramid_.build(field_, march_pyramid_options(options_));
 }
 
 double HorizonMarcher::height_at(int step, GridPoint p) const {
   if (!options_.use_pyramid) return bilinear_height(field_, p);
-  return pyramid_.sample(levels_[step], p.x, p.y, terrain::Interpolation::CubicBSpline);
+  return pyramid_.sample(schedule_.levels[step], p.x, p.y, terrain::Interpolation::CubicBSpline);
 }
 
 double HorizonMarcher::max_elevation(int i, int j, Heading u) const {
@@ -72,7 +80,7 @@ double HorizonMarcher::max_elevation(int i, int j, Heading u) const {
   }
   int m = 0, steepest = 0;
   for (int s = 0; s < steps(); ++s) {
-    const double t = distances_[s];
+    const double t = schedule_.distances[s];
     const GridPoint p = ray_point(field_, i, j, u, t);
     if (!on_grid(field_, p)) break;
     q[m] = (height_at(s, p) - options_.curvature.drop(t) - h0) / t;

@@ -53,6 +53,18 @@ int auto_march_levels(double max_distance, double texel, int k_v);
 // −atan(N_h·u / N_z). Directions at or below it face into the surface.
 double tangent_plane_floor(const glm::dvec3& normal, Heading u);
 
+// The step schedule: t_s (m) and pyramid level ℓ_s of each step s (formulas above),
+// clamped to the levels HeightPyramid would build for `field` (0 without use_pyramid).
+// Needs no pyramid: the GPU path builds its own (gpu/gpu_pyramid.h).
+struct MarchSchedule {
+  std::vector<double> distances;
+  std::vector<int> levels;
+};
+MarchSchedule march_schedule(const terrain::HeightField& field, const MarchOptions& options);
+
+// The pyramid options the march samples (k_v levels per halving, automatic count).
+terrain::PyramidOptions march_pyramid_options(const MarchOptions& options);
+
 class HorizonMarcher {
  public:
   // Builds the B-spline pyramid (k_v levels per halving) unless use_pyramid is off.
@@ -62,13 +74,13 @@ class HorizonMarcher {
   // on the grid. Thread-safe.
   double max_elevation(int i, int j, Heading u) const;
 
-  int steps() const { return static_cast<int>(distances_.size()); }
-  double distance(int s) const { return distances_[s]; }  // t_s (m)
-  int level_of_step(int s) const { return levels_[s]; }
-  double max_distance() const { return distances_.back(); }
+  int steps() const { return static_cast<int>(schedule_.distances.size()); }
+  double distance(int s) const { return schedule_.distances[s]; }  // t_s (m)
+  int level_of_step(int s) const { return schedule_.levels[s]; }
+  double max_distance() const { return schedule_.distances.back(); }
+  const MarchSchedule& schedule() const { return schedule_; }
   const MarchOptions& options() const { return options_; }
-  // The B-spline pyramid the march samples (empty when use_pyramid is off); the GPU
-  // path uploads this one instead of building its own.
+  // The B-spline pyramid the march samples (empty when use_pyramid is off).
   const terrain::HeightPyramid& pyramid() const { return pyramid_; }
 
  private:
@@ -77,8 +89,7 @@ class HorizonMarcher {
   const terrain::HeightField& field_;
   MarchOptions options_;
   terrain::HeightPyramid pyramid_;
-  std::vector<double> distances_;
-  std::vector<int> levels_;
+  MarchSchedule schedule_;
 };
 
 }  // namespace skylit::shading

@@ -38,8 +38,10 @@ std::string product_names() {
   return out;
 }
 
-void validate_subsample(int s) {
+void validate_subsample(const ProductOptions& options) {
+  const int s = options.subsample;
   if (s != 1 && s != 2 && s != 4) throw std::invalid_argument("subsample must be 1, 2 or 4");
+  if (s != 1 && options.exact) throw std::invalid_argument("subsample needs the multi-resolution march (not --exact)");
 }
 
 bool uses_lighting(Product product, const ProductOptions& options) {

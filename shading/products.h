@@ -77,9 +77,16 @@ struct ProductOptions {
   bool exact = false;           // ground truth: dense half-texel march (see horizon_exact.h)
   ExactOptions exact_options;
   ShadedOptions shaded;
-  // Horizon sub-sampling s ∈ {1, 2, 4} (DESIGN.md step 4, NS09 §7): raw horizons are
-  // marched only at every s-th texel (the last row and column included) and bilinearly
-  // interpolated to the others; normals, floors, slices and shading stay per texel.
+  // Horizon sub-sampling s ∈ {1, 2, 4} (DESIGN.md step 4, NS09 §7). Coarse positions
+  // per axis: 0, s, 2s, … and always the last index (shading/horizon_subsample.h). The
+  // raw march maxima σ_k (before any floor) are marched at the coarse texels exactly as
+  // with s = 1; every other texel mixes them linearly in each axis between its
+  // bracketing coarse positions (bilinear; only the samples with a non-zero weight: one,
+  // two or four). Where one of those samples is nodata or its σ_k is not finite (−∞: no
+  // step on the grid, at edges), the texel marches its own ray for that azimuth.
+  // Normals, floors (receiver ground, tangent plane), svf/skyview formulas, NLP slices,
+  // wedges and shading stay per texel; the sun's shadow is never sub-sampled. Needs the
+  // multi-resolution march: `exact` (the ground truth) is rejected with s > 1.
   int subsample = 1;
   unsigned threads = 0;         // worker threads over rows; 0 = hardware concurrency
   // Sky + sun (lighting.h). Required by shadow and irradiance; for shaded it replaces
@@ -87,8 +94,9 @@ struct ProductOptions {
   std::optional<Lighting> lighting;
 };
 
-// Throws std::invalid_argument unless s is 1, 2 or 4 (ProductOptions::subsample).
-void validate_subsample(int s);
+// Throws std::invalid_argument unless ProductOptions::subsample is 1, 2 or 4, and for
+// sub-sampling with `exact`.
+void validate_subsample(const ProductOptions& options);
 
 // True when `product` with `options` uses the lighting (sun shadows, sky tables of a
 // lit sky): shadow, irradiance, and shaded with options.lighting set.

@@ -1,6 +1,7 @@
 #include "shading/reference_pipeline.h"
 
 #include "shading/azimuth.h"
+#include "shading/horizon_subsample.h"
 #include "shading/shading_modes.h"
 #include "shading/sh_exp.h"
 #include "shading/quadrature.h"
@@ -152,19 +153,82 @@ class LitShading {
   std::vector<std::unique_ptr<SkyShading>> sky_;
 };
 
+// The raw horizons σ_k (no floor) of every texel, ProductOptions::subsample (products.h):
+// s = 1 marches each texel. s > 1 first marches the coarse texels of the whole field
+// (march_coarse); a texel's σ_k is then the bilinear mix of the coarse samples with a
+// non-zero weight, or its own march where one of them is not finite (nodata coarse
+// texel: NaN, never marched; no step on the grid: −∞). Holds (W_f/s)·(H_f/s)·W doubles.
+class HorizonSource {
+ public:
+  HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, int s,
+                const std::vector<Heading>& headings)
+      : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, s}, rows_{field.height, s} {}
+
+  bool subsampled() const { return cols_.step > 1; }
+  // Share of the texels' work done by march_coarse (for progress): coarse / (coarse + all).
+  double coarse_share() const {
+    if (!subsampled()) return 0.0;
+    const double coarse = static_cast<double>(cols_.count()) * rows_.count();
+    return coarse / (coarse + static_cast<double>(field_.size()));
+  }
+
+  void march_coarse(unsigned threads, const ProgressCallback& progress) {
+    if (!subsampled()) return;
+    const std::size_t w = headings_.size();
+    coarse_.assign(static_cast<std::size_t>(cols_.count()) * rows_.count() * w,
+                   std::numeric_limits<double>::quiet_NaN());
+    parallel_rows(rows_.count(), threads, [&](int cj) {
+      const int j = rows_.position(cj);
+      for (int ci = 0; ci < cols_.count(); ++ci) {
+        const int i = cols_.position(ci);
+        if (!field_.is_valid(i, j)) continue;  // stays NaN
+        for (std::size_t k = 0; k < w; ++k) coarse_[index(ci, cj, k)] = oracle_.max_elevation(i, j, headings_[k]);
+      }
+    }, progress);
+  }
+
+  void horizons(int i, int j, std::vector<double>& sigma) const {
+    if (!subsampled()) {
+      for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = oracle_.max_elevation(i, j, headings_[k]);
+      return;
+    }
+    const SubsampleAxis::Bracket x = cols_.bracket(i), y = rows_.bracket(j);
+    for (std::size_t k = 0; k < headings_.size(); ++k) {
+      auto along_row = [&](int cj) {
+        const double v0 = coarse_[index(x.c0, cj, k)];
+        return x.c1 == x.c0 ? v0 : (1.0 - x.a) * v0 + x.a * coarse_[index(x.c1, cj, k)];
+      };
+      const double r0 = along_row(y.c0);
+      // Non-finite iff a sample with a non-zero weight is (σ is never +∞).
+      const double v = y.c1 == y.c0 ? r0 : (1.0 - y.a) * r0 + y.a * along_row(y.c1);
+      sigma[k] = std::isfinite(v) ? v : oracle_.max_elevation(i, j, headings_[k]);
+    }
+  }
+
+ private:
+  std::size_t index(int ci, int cj, std::size_t k) const {
+    return (static_cast<std::size_t>(cj) * cols_.count() + ci) * headings_.size() + k;
+  }
+
+  const HorizonOracle& oracle_;
+  const terrain::HeightField& field_;
+  const std::vector<Heading>& headings_;
+  SubsampleAxis cols_, rows_;
+  std::vector<double> coarse_;  // [(cj·count_x + ci)·W + k]
+};
 
 }  // namespace
 
 ProductBands compute_product(const terrain::HeightField& field, Product product, const ProductOptions& options,
                              const ProgressCallback& progress) {
   if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
+  validate_subsample(options);
   const HorizonOracle oracle(field, options);
   const int w_march = options.march.azimuths;
   const int w_sky = options.exact ? options.exact_options.sky_azimuths : w_march;
   if (w_sky < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
   if (!(options.shaded.albedo >= 0.0) || !(options.shaded.exposure > 0.0))
     throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
-  validate_subsample(options.subsample);
   const bool lit = uses_lighting(product, options);
   if (lit && !options.lighting)
     throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
@@ -230,6 +294,11 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
       : needs_visibility          ? math_headings(w_sky)
                                   : geographic_headings(w_sky);
 
+  // Raw horizons: with sub-sampling, the coarse texels are marched first.
+  HorizonSource horizons(oracle, field, options.subsample, headings);
+  const double coarse_share = horizons.coarse_share();
+  horizons.march_coarse(options.threads, [&](double f) { main_progress(coarse_share * f); });
+
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
     std::vector<double> scratch, vis, log_vis;
@@ -241,7 +310,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;  // stays NaN
       const glm::dvec3 n = horn_normal(field, i, j);
-      for (std::size_t k = 0; k < headings.size(); ++k) sigma[k] = oracle.max_elevation(i, j, headings[k]);
+      horizons.horizons(i, j, sigma);
       switch (product) {
         case Product::Horizon:
           for (int k = 0; k < w_march; ++k)
@@ -274,7 +343,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
         case Product::Shadow: break;  // returned above
       }
     }
-  }, main_progress);
+  }, [&](double f) { main_progress(coarse_share + (1.0 - coarse_share) * f); });
   return out;
 }
 

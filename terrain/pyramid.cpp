@@ -19,12 +19,7 @@ double bspline3(double t) {
   return 0.0;
 }
 
-// Weights of one output texel of a reduction along one axis: sample k (clamped to the
-// grid) gets weight[k − first].
-struct Taps {
-  int first = 0;
-  std::vector<double> weight;
-};
+using Taps = ReductionTaps;
 
 // w_k = ∫ hat(x − k) β3((p − x)/s)/s dx, with the hat (linear interpolation) basis of
 // the input. The integrand is a polynomial of degree ≤ 4 between the knots of both
@@ -56,13 +51,6 @@ Taps reduction_taps(double p, double s) {
   return taps;
 }
 
-std::vector<Taps> axis_taps(int n_in, int n_out) {
-  const double s = static_cast<double>(n_in) / n_out;
-  std::vector<Taps> taps(n_out);
-  for (int i = 0; i < n_out; ++i) taps[i] = reduction_taps((i + 0.5) * s - 0.5, s);
-  return taps;
-}
-
 // Range [lo, hi) of outputs whose (clamped) taps touch inputs [in_lo, in_hi).
 std::pair<int, int> affected(const std::vector<Taps>& taps, int n_in, int in_lo, int in_hi) {
   int lo = static_cast<int>(taps.size()), hi = 0;
@@ -74,37 +62,29 @@ std::pair<int, int> affected(const std::vector<Taps>& taps, int n_in, int in_lo,
   return {lo, std::max(lo, hi)};
 }
 
-// Solves (c[i−1] + 4c[i] + c[i+1])/6 = f[i] with edge-clamped c (c[−1] = c[0],
-// c[n] = c[n−1]) in place over n values spaced `stride` apart (Thomas algorithm;
-// the system is strictly diagonally dominant).
-void bspline_solve(float* f, int n, std::size_t stride, std::vector<double>& cp, std::vector<double>& d) {
-  if (n == 1) return;  // 6c/6 = f
-  cp.resize(n);
+// Solves the B-spline interpolation system (bspline_factors) in place over n values
+// spaced `stride` apart; d is scratch.
+void bspline_solve(float* f, int n, std::size_t stride, const BSplineFactors& lu, std::vector<double>& d) {
+  if (n == 1) return;  // the clamped system is c = f
   d.resize(n);
-  auto diag = [n](int i) { return (i == 0 || i == n - 1) ? 5.0 / 6.0 : 4.0 / 6.0; };
-  const double off = 1.0 / 6.0;
-  double m = diag(0);
-  cp[0] = off / m;
-  d[0] = f[0] / m;
-  for (int i = 1; i < n; ++i) {
-    m = diag(i) - off * cp[i - 1];
-    cp[i] = off / m;
-    d[i] = (f[i * stride] - off * d[i - 1]) / m;
-  }
+  const double off = kBSplineOffDiagonal;
+  d[0] = f[0] / lu.pivot[0];
+  for (int i = 1; i < n; ++i) d[i] = (f[i * stride] - off * d[i - 1]) / lu.pivot[i];
   f[(n - 1) * stride] = static_cast<float>(d[n - 1]);
   double next = d[n - 1];
   for (int i = n - 2; i >= 0; --i) {
-    next = d[i] - cp[i] * next;
+    next = d[i] - lu.upper[i] * next;
     f[i * stride] = static_cast<float>(next);
   }
 }
 
 void compute_coeffs(PyramidLevel& lv) {
   lv.coeffs = lv.samples;
-  std::vector<double> cp, d;
+  std::vector<double> d;
+  const BSplineFactors rows = bspline_factors(lv.width), cols = bspline_factors(lv.height);
   for (int j = 0; j < lv.height; ++j)
-    bspline_solve(lv.coeffs.data() + static_cast<std::size_t>(j) * lv.width, lv.width, 1, cp, d);
-  for (int i = 0; i < lv.width; ++i) bspline_solve(lv.coeffs.data() + i, lv.height, lv.width, cp, d);
+    bspline_solve(lv.coeffs.data() + static_cast<std::size_t>(j) * lv.width, lv.width, 1, rows, d);
+  for (int i = 0; i < lv.width; ++i) bspline_solve(lv.coeffs.data() + i, lv.height, lv.width, cols, d);
 }
 
 double clamp_coord(double v, int n) {
@@ -167,6 +147,48 @@ float sample_bspline(const PyramidLevel& lv, double x, double y) {
   return static_cast<float>(sum);
 }
 
+std::vector<ReductionTaps> reduction_axis_taps(int n_in, int n_out) {
+  if (n_in < 1 || n_out < 1) throw std::invalid_argument("pyramid: axis sizes must be ≥ 1");
+  const double s = static_cast<double>(n_in) / n_out;
+  std::vector<Taps> taps(n_out);
+  for (int i = 0; i < n_out; ++i) taps[i] = reduction_taps((i + 0.5) * s - 0.5, s);
+  return taps;
+}
+
+BSplineFactors bspline_factors(int n) {
+  if (n < 1) throw std::invalid_argument("pyramid: B-spline system size must be ≥ 1");
+  BSplineFactors lu;
+  lu.pivot.resize(n);
+  lu.upper.resize(n);
+  if (n == 1) {  // c[−1] = c[0] = c[1]: (1 + 4 + 1)/6 = 1
+    lu.pivot[0] = 1.0, lu.upper[0] = 0.0;
+    return lu;
+  }
+  auto diag = [n](int i) { return (i == 0 || i == n - 1) ? 5.0 / 6.0 : 4.0 / 6.0; };  // clamped ends
+  const double off = kBSplineOffDiagonal;
+  for (int i = 0; i < n; ++i) {
+    lu.pivot[i] = diag(i) - (i > 0 ? off * lu.upper[i - 1] : 0.0);
+    lu.upper[i] = off / lu.pivot[i];
+  }
+  return lu;
+}
+
+int pyramid_level_count(int width, int height, const PyramidOptions& options) {
+  if (options.levels < 0 || options.levels > 1024) throw std::invalid_argument("pyramid: levels must be 0…1024");
+  return options.levels > 0 ? options.levels : auto_pyramid_levels(width, height, options);
+}
+
+LevelShape pyramid_level_shape(int width, int height, int k_v, int l) {
+  if (k_v < 1) throw std::invalid_argument("pyramid: k_v must be at least 1");
+  LevelShape shape;
+  const double s = std::exp2(static_cast<double>(l) / k_v);
+  shape.width = l == 0 ? width : level_size(width, s);
+  shape.height = l == 0 ? height : level_size(height, s);
+  shape.step_x = static_cast<double>(width) / shape.width;
+  shape.step_y = static_cast<double>(height) / shape.height;
+  return shape;
+}
+
 int auto_pyramid_levels(int width, int height, const PyramidOptions& o) {
   if (o.k_v < 1) throw std::invalid_argument("pyramid: k_v must be at least 1");
   if (o.min_size < 1) throw std::invalid_argument("pyramid: min_size must be at least 1");
@@ -191,15 +213,15 @@ void HeightPyramid::build(const HeightField& field, const PyramidOptions& option
       static_cast<int>(field.dx_per_row.size()) != field.height)
     throw std::invalid_argument("pyramid: malformed height field");
   options_ = options;
-  const int n = options.levels > 0 ? options.levels : auto_pyramid_levels(field.width, field.height, options);
+  const int n = pyramid_level_count(field.width, field.height, options);
   levels_.assign(n, {});
   for (int l = 0; l < n; ++l) {
     PyramidLevel& lv = levels_[l];
-    const double s = nominal_scale(l);
-    lv.width = l == 0 ? field.width : level_size(field.width, s);
-    lv.height = l == 0 ? field.height : level_size(field.height, s);
-    lv.step_x = static_cast<double>(field.width) / lv.width;
-    lv.step_y = static_cast<double>(field.height) / lv.height;
+    const LevelShape shape = pyramid_level_shape(field.width, field.height, options.k_v, l);
+    lv.width = shape.width;
+    lv.height = shape.height;
+    lv.step_x = shape.step_x;
+    lv.step_y = shape.step_y;
     lv.dy = lv.step_y * field.dy;
     lv.dx_per_row.resize(lv.height);
     for (int j = 0; j < lv.height; ++j) {  // level-0 dx at the row's centre, interpolated
@@ -225,8 +247,8 @@ void HeightPyramid::compute_level(const HeightField& field, int l, const PixelRe
     compute_coeffs(lv);
     return;
   }
-  const auto tx = axis_taps(field.width, lv.width);
-  const auto ty = axis_taps(field.height, lv.height);
+  const auto tx = reduction_axis_taps(field.width, lv.width);
+  const auto ty = reduction_axis_taps(field.height, lv.height);
   const auto [i_lo, i_hi] = affected(tx, field.width, region.x0, region.x1());
   const auto [j_lo, j_hi] = affected(ty, field.height, region.y0, region.y1());
   if (i_lo >= i_hi || j_lo >= j_hi) return;

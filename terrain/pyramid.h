@@ -104,4 +104,35 @@ class HeightPyramid {
 // Automatic level count for a w × h field.
 int auto_pyramid_levels(int width, int height, const PyramidOptions& options);
 
+// ---- The construction's pieces, shared with the GPU build (gpu/gpu_pyramid.h) ----
+
+// Level count HeightPyramid::build gives a w × h field (options.levels, or automatic).
+int pyramid_level_count(int width, int height, const PyramidOptions& options);
+
+struct LevelShape {
+  int width = 0, height = 0;
+  double step_x = 1.0, step_y = 1.0;  // W_0/W_l, H_0/H_l
+};
+// Size and texel size of level l of a w × h field (COORDINATE CONVENTION above).
+LevelShape pyramid_level_shape(int width, int height, int k_v, int l);
+
+// Weights of one output texel of a level's reduction along one axis (FILTERS above):
+// input sample first + q, clamped to the grid, gets weight[q]; they sum to 1.
+struct ReductionTaps {
+  int first = 0;
+  std::vector<double> weight;
+};
+// Taps of every output texel when n_in level-0 texels reduce to n_out.
+std::vector<ReductionTaps> reduction_axis_taps(int n_in, int n_out);
+
+// LU factors of the n × n edge-clamped B-spline interpolation system
+// (c[i−1] + 4c[i] + c[i+1])/6 = f[i], c[−1] = c[0], c[n] = c[n−1] (Thomas algorithm):
+//   forward  d[i] = (f[i] − kBSplineOffDiagonal·d[i−1]) / pivot[i]
+//   backward c[i] = d[i] − upper[i]·c[i+1]   (c[n−1] = d[n−1])
+inline constexpr double kBSplineOffDiagonal = 1.0 / 6.0;
+struct BSplineFactors {
+  std::vector<double> pivot, upper;
+};
+BSplineFactors bspline_factors(int n);
+
 }  // namespace skylit::terrain

@@ -1,0 +1,186 @@
+#include "gpu/gpu_pyramid.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "gpu/gl_context.h"
+#include "gpu/gpu_products.h"
+
+namespace skylit::gpu {
+namespace {
+
+// Binding points of the pyramid kernels (their own dispatches; rebound every build).
+enum Binding : int { kSrc = 0, kDst = 1, kTaps = 2, kWeights = 3, kCoeffs = 4 };
+constexpr int kLocal2d = 8;   // 8×8 outputs per filter work group
+constexpr int kLocal1d = 64;  // lines per solve work group
+
+GlslDefines filter_defines() {
+  GlslDefines d;
+  d.set("LOCAL_SIZE_X", kLocal2d)
+      .set("LOCAL_SIZE_Y", kLocal2d)
+      .set("SRC_BINDING", kSrc)
+      .set("DST_BINDING", kDst)
+      .set("TAPS_BINDING", kTaps)
+      .set("WEIGHTS_BINDING", kWeights);
+  return d;
+}
+
+GlslDefines solve_defines() {
+  GlslDefines d;
+  d.set("LOCAL_SIZE_X", kLocal1d)
+      .set("COEFFS_BINDING", kCoeffs)
+      .set("WEIGHTS_BINDING", kWeights)
+      .set("OFF_DIAGONAL", terrain::kBSplineOffDiagonal);
+  return d;
+}
+
+int to_index(std::size_t v, const char* what) {
+  if (v > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw std::runtime_error(std::string("GPU pyramid: ") + what + " exceeds 32-bit indexing");
+  return static_cast<int>(v);
+}
+
+// Appends the taps of one axis of one level; returns the base entry in `taps`.
+int append_taps(int n_in, int n_out, std::vector<std::int32_t>& taps, std::vector<float>& weights) {
+  const int base = static_cast<int>(taps.size() / 4);
+  for (const terrain::ReductionTaps& t : terrain::reduction_axis_taps(n_in, n_out)) {
+    const std::int32_t entry[4] = {t.first, static_cast<std::int32_t>(t.weight.size()),
+                                   to_index(weights.size(), "the filter taps"), 0};
+    taps.insert(taps.end(), entry, entry + 4);
+    for (double w : t.weight) weights.push_back(static_cast<float>(w));
+  }
+  return base;
+}
+
+// Appends pivot[0..n) then upper[0..n); returns the pivots' first entry.
+int append_factors(int n, std::vector<float>& weights) {
+  const int base = to_index(weights.size(), "the filter taps");
+  const terrain::BSplineFactors lu = terrain::bspline_factors(n);
+  for (double p : lu.pivot) weights.push_back(static_cast<float>(p));
+  for (double u : lu.upper) weights.push_back(static_cast<float>(u));
+  return base;
+}
+
+}  // namespace
+
+GpuPyramid::GpuPyramid()
+    : mFilter(ComputeProgram::from_embedded("pyramid_filter.comp", filter_defines())),
+      mSolve(ComputeProgram::from_embedded("pyramid_coeffs.comp", solve_defines())) {}
+
+std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options) {
+  if (width < 1 || height < 1) throw std::invalid_argument("GPU pyramid: empty height field");
+  if (heights.size_bytes() < static_cast<std::size_t>(width) * height * sizeof(float))
+    throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
+  std::size_t uploaded = 0;
+  const bool same = width == mWidth && height == mHeight && options.k_v == mOptions.k_v &&
+                    options.levels == mOptions.levels && options.min_size == mOptions.min_size;
+  if (!same) {  // geometry and tables for this size
+    const int n = terrain::pyramid_level_count(width, height, options);
+    mShapes.clear();
+    mOffsets.clear();
+    mTables.assign(n, {});
+    std::vector<std::int32_t> taps, table;
+    std::vector<float> weights;
+    std::size_t total = 0, scratch = 1;
+    for (int l = 0; l < n; ++l) {
+      const terrain::LevelShape s = terrain::pyramid_level_shape(width, height, options.k_v, l);
+      mShapes.push_back(s);
+      mOffsets.push_back(total);
+      LevelTables& t = mTables[l];
+      if (l > 0) {
+        t.taps_x = append_taps(width, s.width, taps, weights);
+        t.taps_y = append_taps(height, s.height, taps, weights);
+        scratch = std::max(scratch, static_cast<std::size_t>(height) * s.width);
+      }
+      t.factors_x = append_factors(s.width, weights);
+      t.factors_y = append_factors(s.height, weights);
+      const std::int32_t dims[4] = {s.width, s.height, to_index(total, "the pyramid"), 0};
+      const float scale[4] = {static_cast<float>(s.step_x), static_cast<float>(s.step_y), 0.0f, 0.0f};
+      table.insert(table.end(), dims, dims + 4);
+      for (float f : scale) table.push_back(std::bit_cast<std::int32_t>(f));
+      total += static_cast<std::size_t>(s.width) * s.height;
+    }
+    if (taps.empty()) taps.assign(4, 0);  // GL wants non-empty buffers bound
+    check_storage_size(total * sizeof(float), "GPU pipeline: the height pyramid");
+    check_storage_size(scratch * sizeof(float), "GPU pipeline: the pyramid's filter scratch");
+    check_storage_size(weights.size() * sizeof(float), "GPU pipeline: the pyramid's filter taps");
+    to_index(total + scratch, "the pyramid");
+    mTaps = Buffer::from(std::span<const std::int32_t>(taps));
+    mWeights = Buffer::from(std::span<const float>(weights));
+    mLevelTable = Buffer::from(std::span<const std::int32_t>(table));
+    mCoeffs = Buffer(total * sizeof(float));
+    mScratch = Buffer(scratch * sizeof(float));
+    uploaded = mTaps.size_bytes() + mWeights.size_bytes() + mLevelTable.size_bytes();
+    mWidth = width, mHeight = height, mOptions = options;
+  }
+
+  mTaps.bind_storage(kTaps);
+  mWeights.bind_storage(kWeights);
+  mCoeffs.bind_storage(kCoeffs);
+  // Level 0 is the heights themselves.
+  glCopyNamedBufferSubData(heights.id(), mCoeffs.id(), 0, 0,
+                           static_cast<GLsizeiptr>(static_cast<std::size_t>(width) * height * sizeof(float)));
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  for (int l = 0; l < levels(); ++l) {
+    const terrain::LevelShape& s = mShapes[l];
+    const LevelTables& t = mTables[l];
+    const int offset = static_cast<int>(mOffsets[l]);
+    if (l > 0) {
+      // x pass: every level-0 row → s.width values, into the scratch buffer.
+      heights.bind_storage(kSrc);
+      mScratch.bind_storage(kDst);
+      mFilter.set_uniform("axis", 0);
+      mFilter.set_uniform("out_width", s.width);
+      mFilter.set_uniform("out_height", height);
+      mFilter.set_uniform("dst_offset", 0);
+      mFilter.set_uniform("n_in", width);
+      mFilter.set_uniform("along_stride", 1);
+      mFilter.set_uniform("across_stride", width);
+      mFilter.set_uniform("tap_base", t.taps_x);
+      mFilter.dispatch_covering(s.width, height);
+      // y pass: the scratch's columns → the level's samples, in its coefficients' slot.
+      mScratch.bind_storage(kSrc);
+      mCoeffs.bind_storage(kDst);
+      mFilter.set_uniform("axis", 1);
+      mFilter.set_uniform("out_height", s.height);
+      mFilter.set_uniform("dst_offset", offset);
+      mFilter.set_uniform("n_in", height);
+      mFilter.set_uniform("along_stride", s.width);
+      mFilter.set_uniform("across_stride", 1);
+      mFilter.set_uniform("tap_base", t.taps_y);
+      mFilter.dispatch_covering(s.width, s.height);
+      mCoeffs.bind_storage(kCoeffs);
+    }
+    // Coefficients: rows, then columns.
+    mSolve.set_uniform("offset", offset);
+    mSolve.set_uniform("lines", s.height);
+    mSolve.set_uniform("n", s.width);
+    mSolve.set_uniform("line_stride", s.width);
+    mSolve.set_uniform("elem_stride", 1);
+    mSolve.set_uniform("factor_base", t.factors_x);
+    mSolve.dispatch_covering(s.height);
+    mSolve.set_uniform("lines", s.width);
+    mSolve.set_uniform("n", s.height);
+    mSolve.set_uniform("line_stride", 1);
+    mSolve.set_uniform("elem_stride", s.width);
+    mSolve.set_uniform("factor_base", t.factors_y);
+    mSolve.dispatch_covering(s.width);
+  }
+  throw_on_gl_error("GpuPyramid::build");
+  return uploaded;
+}
+
+std::vector<float> GpuPyramid::download_level(int l) const {
+  const terrain::LevelShape& s = shape(l);
+  std::vector<float> out(static_cast<std::size_t>(s.width) * s.height);
+  mCoeffs.download(out.data(), out.size() * sizeof(float), mOffsets.at(l) * sizeof(float));
+  return out;
+}
+
+}  // namespace skylit::gpu

@@ -1,0 +1,62 @@
+// The B-spline height pyramid built on the GPU (DESIGN.md pipeline step 2): the same
+// levels as terrain::HeightPyramid — level l ≥ 1 the level-0 piecewise-linear heights
+// filtered by β3 at the level's texel size, separably (shaders/pyramid_filter.comp),
+// then every level's interpolating B-spline coefficients by the edge-clamped
+// tridiagonal solve, rows then columns (shaders/pyramid_coeffs.comp) — to float32
+// rounding (tests/gpu_pyramid_test.cpp).
+//
+// C++ supplies everything that is not arithmetic on heights, from terrain/pyramid.h's
+// own functions: level sizes and steps (pyramid_level_shape), the filter taps
+// (reduction_axis_taps) and the solve's LU factors (bspline_factors). They depend on
+// the field's size alone, so they are uploaded once per size and kept.
+//
+// Output layout (what shaders/horizon_march.comp reads): every level's coefficients
+// row-major, levels back to back in one buffer; a level table with, per level,
+// ivec4(width, height, offset of its first coefficient, 0) and vec4(step_x, step_y, 0, 0).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "gpu/buffers.h"
+#include "gpu/compute_program.h"
+#include "terrain/pyramid.h"
+
+namespace skylit::gpu {
+
+class GpuPyramid {
+ public:
+  // Compiles the two kernels. Needs a current GL 4.5 context for its whole life.
+  GpuPyramid();
+
+  // Builds every level of the pyramid of the width × height field whose level-0
+  // heights (row-major float32) are in `heights`. Geometry tables and buffers are
+  // (re)made only when the size or options change. Returns the bytes uploaded (the
+  // tables, or 0 when they were kept). Throws std::invalid_argument for a bad size or
+  // options, std::runtime_error when the coefficients exceed the storage-buffer limit.
+  std::size_t build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options);
+
+  int levels() const { return static_cast<int>(mShapes.size()); }
+  const terrain::LevelShape& shape(int l) const { return mShapes.at(l); }
+  std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l
+  const Buffer& coeffs() const { return mCoeffs; }
+  const Buffer& level_table() const { return mLevelTable; }
+  // Level l's coefficients, downloaded (tests).
+  std::vector<float> download_level(int l) const;
+
+ private:
+  ComputeProgram mFilter, mSolve;
+  int mWidth = 0, mHeight = 0;
+  terrain::PyramidOptions mOptions;
+  std::vector<terrain::LevelShape> mShapes;
+  std::vector<std::size_t> mOffsets;
+  // Per level: tap-table base of the x and y passes (l ≥ 1), pivot-table base of the
+  // row and column solves, in mTaps / mWeights.
+  struct LevelTables {
+    int taps_x = 0, taps_y = 0, factors_x = 0, factors_y = 0;
+  };
+  std::vector<LevelTables> mTables;
+  Buffer mTaps, mWeights, mCoeffs, mLevelTable, mScratch;
+};
+
+}  // namespace skylit::gpu

@@ -1,0 +1,152 @@
+// The height pyramid built on the GPU (gpu::GpuPyramid: shaders/pyramid_filter.comp,
+// shaders/pyramid_coeffs.comp) against the CPU reference terrain::HeightPyramid: level
+// count and geometry, the level table the march kernel reads, and every level's
+// B-spline coefficients, for odd, even and non-square sizes, k_v = 1, 2, 4, on fields
+// with a nodata void filled by Laplace inpainting (as the DEM reader fills them).
+//
+// Tolerance: |Δc| ≤ kCoeffTol × the field's height range (hmax − hmin), every
+// coefficient of every level. The GPU filters in float32 around the window's centre
+// value (error ~ ε·relief·√taps) and solves the tridiagonal systems in float32
+// (error ~ a few ε·|c|, |c| ≤ 3·max|h| since the inverse's ∞-norm is ≤ 3); the CPU does
+// both in double and rounds to float. With heights of 2–3.4 km over a 1.4 km range,
+// ε·3·3400 m / 1400 m ≈ 4e-7 per rounding; observed ≤ 1.6e-6 (printed).
+// Runs on Mesa llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gpu/buffers.h"
+#include "gpu/gpu_pyramid.h"
+#include "terrain/nodata_fill.h"
+#include "terrain/pyramid.h"
+#include "terrain/synthetic.h"
+
+namespace skylit::gpu {
+namespace {
+
+constexpr double kCoeffTol = 1e-5;
+
+using GpuPyramidTest = testing::GpuTest;
+
+// Synthetic mountains 2–3.4 km high (a high base: float rounding scales with it) with a
+// rectangular void filled by Laplace inpainting.
+terrain::HeightField void_filled_field(int w, int h, std::uint64_t seed) {
+  terrain::SyntheticOptions o;
+  o.width = w;
+  o.height = h;
+  o.spacing = 30.0;
+  o.seed = seed;
+  o.base_height = 2000.0;
+  o.relief = 1400.0;
+  o.feature_size = 1200.0;
+  terrain::HeightField f = terrain::make_synthetic_terrain(o);
+  for (int j = h / 3; j < h / 3 + std::max(1, h / 5); ++j)
+    for (int i = w / 4; i < w / 4 + std::max(1, w / 6); ++i) f.valid[static_cast<std::size_t>(j) * w + i] = 0;
+  terrain::fill_laplace(f.heights, f.valid, w, h);
+  return f;
+}
+
+double height_range(const terrain::HeightField& f) {
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  return static_cast<double>(*hi) - *lo;
+}
+
+// Builds both pyramids and compares them; returns the largest |Δc| / range.
+double expect_pyramids_match(GpuPyramid& gpu, const terrain::HeightField& f, int k_v) {
+  const terrain::PyramidOptions options{.k_v = k_v};
+  const terrain::HeightPyramid cpu(f, options);
+  const Buffer heights = Buffer::from(std::span<const float>(f.heights));
+  gpu.build(heights, f.width, f.height, options);
+  EXPECT_EQ(gpu.levels(), cpu.levels());
+  const double range = height_range(f);
+  double worst = 0.0;
+  const std::vector<std::int32_t> table = gpu.level_table().download_all<std::int32_t>();
+  EXPECT_EQ(table.size(), 8u * cpu.levels());
+  std::size_t offset = 0;
+  for (int l = 0; l < std::min(gpu.levels(), cpu.levels()); ++l) {
+    SCOPED_TRACE("level " + std::to_string(l));
+    const terrain::PyramidLevel& lv = cpu.level(l);
+    // The level table as horizon_march.comp reads it: ivec4(w, h, offset, 0), vec4(step).
+    EXPECT_EQ(table[8 * l + 0], lv.width);
+    EXPECT_EQ(table[8 * l + 1], lv.height);
+    EXPECT_EQ(table[8 * l + 2], static_cast<std::int32_t>(offset));
+    EXPECT_EQ(std::bit_cast<float>(table[8 * l + 4]), static_cast<float>(lv.step_x));
+    EXPECT_EQ(std::bit_cast<float>(table[8 * l + 5]), static_cast<float>(lv.step_y));
+    offset += lv.coeffs.size();
+    const std::vector<float> c = gpu.download_level(l);
+    if (c.size() != lv.coeffs.size()) {
+      ADD_FAILURE() << "level sizes differ";
+      continue;
+    }
+    double level_worst = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k)
+      level_worst = std::max(level_worst, std::abs(static_cast<double>(c[k]) - lv.coeffs[k]) / range);
+    EXPECT_LE(level_worst, kCoeffTol) << lv.width << "×" << lv.height;
+    worst = std::max(worst, level_worst);
+  }
+  return worst;
+}
+
+TEST_F(GpuPyramidTest, CoefficientsMatchTheCpuPyramid) {
+  GpuPyramid gpu;
+  struct Size {
+    int w, h;
+  };
+  // Odd, even, non-square both ways, a narrow strip, and one whose coarse levels have
+  // hundreds of taps per output.
+  for (const Size s : {Size{67, 45}, Size{64, 64}, Size{40, 96}, Size{3, 50}, Size{257, 131}})
+    for (int k_v : {1, 2, 4}) {
+      SCOPED_TRACE(std::to_string(s.w) + "×" + std::to_string(s.h) + " k_v " + std::to_string(k_v));
+      const terrain::HeightField f = void_filled_field(s.w, s.h, 11 + s.w);
+      const double worst = expect_pyramids_match(gpu, f, k_v);
+      std::cout << s.w << "×" << s.h << " k_v " << k_v << ": max |Δc| / range = " << worst << "\n";
+    }
+}
+
+TEST_F(GpuPyramidTest, ConstantFieldStaysConstantAtEveryLevel) {
+  // Independent of the CPU code: the filter's weights sum to 1 and the interpolation
+  // system's rows sum to 1, so every coefficient of a constant field is that constant.
+  terrain::HeightField f(37, 23, 10.0);
+  std::fill(f.heights.begin(), f.heights.end(), 1234.5f);
+  GpuPyramid gpu;
+  const Buffer heights = Buffer::from(std::span<const float>(f.heights));
+  gpu.build(heights, f.width, f.height, terrain::PyramidOptions{.k_v = 2});
+  for (int l = 0; l < gpu.levels(); ++l)
+    for (float c : gpu.download_level(l)) ASSERT_NEAR(c, 1234.5, 1234.5 * 1e-6) << "level " << l;
+}
+
+TEST_F(GpuPyramidTest, TablesAreKeptForTheSameSize) {
+  const terrain::HeightField a = void_filled_field(50, 30, 3), b = void_filled_field(50, 30, 4);
+  GpuPyramid gpu;
+  const terrain::PyramidOptions options{.k_v = 4};
+  const Buffer ha = Buffer::from(std::span<const float>(a.heights));
+  const Buffer hb = Buffer::from(std::span<const float>(b.heights));
+  EXPECT_GT(gpu.build(ha, a.width, a.height, options), 0u);
+  EXPECT_EQ(gpu.build(hb, b.width, b.height, options), 0u);  // same geometry: nothing uploaded
+  const terrain::HeightPyramid cpu(b, options);
+  for (int l = 0; l < gpu.levels(); ++l) {
+    const std::vector<float> c = gpu.download_level(l);
+    for (std::size_t k = 0; k < c.size(); ++k)
+      ASSERT_NEAR(c[k], cpu.level(l).coeffs[k], kCoeffTol * height_range(b)) << "level " << l;
+  }
+  EXPECT_GT(gpu.build(ha, a.width, a.height, terrain::PyramidOptions{.k_v = 2}), 0u);  // new options: new tables
+}
+
+TEST_F(GpuPyramidTest, RejectsBadInput) {
+  GpuPyramid gpu;
+  const Buffer small(16);
+  EXPECT_THROW(gpu.build(small, 0, 4, {}), std::invalid_argument);
+  EXPECT_THROW(gpu.build(small, 4, 4, {}), std::invalid_argument);  // 16 B < 4·4 floats
+  EXPECT_THROW(gpu.build(small, 2, 2, terrain::PyramidOptions{.k_v = 0}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace skylit::gpu

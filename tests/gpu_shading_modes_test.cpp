@@ -1,0 +1,147 @@
+// Wedge interpolations on the GPU (shaders/surface_products.comp, the wedge operator of
+// ShadedOptions::wedge: linear, n²×2N, or cubic B-spline, n²×4N with taps j−1 … j+2 and
+// the wrap-around) against the CPU reference shading::compute_product with the same
+// options: unlit `shaded` (both) and lit `irradiance` (B-spline; linear is
+// gpu_lighting_test's), on a small synthetic field.
+//
+// Tolerances (float32 GPU vs double CPU), the bounds argued in gpu_products_test and
+// gpu_lighting_test, which hold for B-spline wedges unchanged: the B-spline operator
+// has twice the taps, so V sums 4W instead of 2W float terms per coefficient (≤ ~2e-5
+// relative instead of ~1e-5), still two decades below the bounds:
+//  * shaded ≤ 1 code value on ≥ 99% of texels, ≤ 2 on all;
+//  * irradiance relative ≤ 1e-3 on ≥ 99% of texels (reference > 0), and
+//    |Δ| ≤ 1e-3·E + 0.02·DNI on all (the sun's shadow fraction in a penumbra).
+// The two interpolations must differ by more than the tolerance somewhere, so the
+// B-spline path is really taken (not the linear operator under another name).
+#include "gpu_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include "gpu/gpu_pipeline.h"
+#include "shading/lighting.h"
+#include "shading/products.h"
+#include "shading/sky_model.h"
+#include "shading/wedge.h"
+#include "terrain/synthetic.h"
+
+namespace skylit::gpu {
+namespace {
+
+using shading::Product;
+using shading::ProductBands;
+using shading::ProductOptions;
+using sh::WedgeInterpolation;
+
+constexpr double kShadedTolCodes = 1.0;
+constexpr double kShadedMaxCodes = 2.0;
+constexpr double kIrradianceRelTol = 1e-3;
+constexpr double kShadowTol = 0.02;  // the shadow fraction's bound (gpu_lighting_test)
+constexpr double kMinFraction = 0.99;
+
+using GpuShadingModesTest = testing::GpuTest;
+
+terrain::HeightField small_field() {
+  terrain::SyntheticOptions o;
+  o.width = 48;
+  o.height = 40;
+  o.spacing = 30.0;
+  o.seed = 3;
+  o.feature_size = 1500.0;
+  o.relief = 1200.0;
+  terrain::HeightField f = terrain::make_synthetic_terrain(o);
+  f.valid[static_cast<std::size_t>(20) * f.width + 24] = 0;
+  return f;
+}
+
+ProductOptions options(WedgeInterpolation wedge, bool lit) {
+  ProductOptions o;
+  o.march.azimuths = 8;
+  o.shaded.wedge = wedge;
+  if (lit) {
+    shading::LightingRequest r;
+    r.sun_azimuth_deg = 135.0;
+    r.sun_elevation_deg = 30.0;
+    r.sky = "preetham";
+    o.lighting = shading::resolve_lighting(r, std::nullopt).lighting;
+  }
+  return o;
+}
+
+struct Diff {
+  double max_abs = 0.0, max_rel = 0.0;
+  double fraction_within = 0.0;  // of compared texels
+  int over_all_bound = 0, nan_mismatches = 0;
+};
+
+// |a − b| per texel; relative (reference b > 0 only) when `relative`. The all-texel
+// bound is abs_all + rel_all·|b|.
+Diff compare(const ProductBands& a, const ProductBands& b, double tol, bool relative, double abs_all,
+             double rel_all) {
+  Diff d;
+  EXPECT_EQ(a.data.size(), b.data.size());
+  EXPECT_EQ(a.band_names, b.band_names);
+  std::size_t compared = 0, within = 0;
+  for (std::size_t t = 0; t < std::min(a.data.size(), b.data.size()); ++t) {
+    const double x = a.data[t], y = b.data[t];
+    if (std::isnan(x) || std::isnan(y)) {
+      d.nan_mismatches += std::isnan(x) != std::isnan(y);
+      continue;
+    }
+    const double e = std::abs(x - y);
+    d.max_abs = std::max(d.max_abs, e);
+    d.over_all_bound += e > abs_all + rel_all * std::abs(y);
+    if (relative && !(y > 0.0)) continue;
+    const double r = relative ? e / y : e;
+    d.max_rel = std::max(d.max_rel, relative ? r : 0.0);
+    ++compared;
+    within += r <= tol;
+  }
+  d.fraction_within = compared ? static_cast<double>(within) / compared : 0.0;
+  EXPECT_GT(compared, 0u);
+  return d;
+}
+
+std::string name(WedgeInterpolation w) { return w == WedgeInterpolation::Linear ? "linear" : "B-spline"; }
+
+TEST_F(GpuShadingModesTest, WedgeInterpolationsMatchReference) {
+  const terrain::HeightField field = small_field();
+  ProductBands irradiance[2];
+  for (WedgeInterpolation w : {WedgeInterpolation::Linear, WedgeInterpolation::BSpline}) {
+    SCOPED_TRACE(name(w));
+    const ProductOptions unlit = options(w, false);
+    ASSERT_TRUE(gpu_supports(Product::Shaded, unlit));
+    const ProductBands gpu_shaded = GpuProductPipeline(Product::Shaded, unlit).compute(field);
+    const ProductBands cpu_shaded = shading::compute_product(field, Product::Shaded, unlit);
+    const Diff s = compare(gpu_shaded, cpu_shaded, kShadedTolCodes, false, kShadedMaxCodes, 0.0);
+    std::cout << "[ " << name(w) << " ] shaded: max |d| " << s.max_abs << " codes, within 1: "
+              << 100.0 * s.fraction_within << "%\n";
+    EXPECT_EQ(s.nan_mismatches, 0);
+    EXPECT_EQ(s.over_all_bound, 0);
+    EXPECT_GE(s.fraction_within, kMinFraction);
+
+    const ProductOptions lit = options(w, true);
+    ASSERT_TRUE(gpu_supports(Product::Irradiance, lit));
+    const ProductBands gpu = GpuProductPipeline(Product::Irradiance, lit).compute(field);
+    irradiance[w == WedgeInterpolation::BSpline] = gpu;
+    if (w == WedgeInterpolation::Linear) continue;  // lit linear: gpu_lighting_test
+    const ProductBands cpu = shading::compute_product(field, Product::Irradiance, lit);
+    const double dni = sky::luminance(lit.lighting->sun.dni);
+    const Diff e = compare(gpu, cpu, kIrradianceRelTol, true, kShadowTol * dni, kIrradianceRelTol);
+    std::cout << "[ " << name(w) << " ] irradiance: max |d| " << e.max_abs << " W/m^2, max rel " << e.max_rel
+              << ", within 1e-3: " << 100.0 * e.fraction_within << "%\n";
+    EXPECT_EQ(e.nan_mismatches, 0);
+    EXPECT_EQ(e.over_all_bound, 0);
+    EXPECT_GE(e.fraction_within, kMinFraction);
+  }
+  const Diff between = compare(irradiance[1], irradiance[0], kIrradianceRelTol, true, 1e300, 0.0);
+  std::cout << "B-spline vs linear irradiance (GPU): max rel " << between.max_rel << "\n";
+  EXPECT_GT(between.max_rel, 10.0 * kIrradianceRelTol);
+}
+
+}  // namespace
+}  // namespace skylit::gpu

@@ -137,4 +137,31 @@ void Texture2D::bind_image(unsigned unit, bool read, bool write) const {
   glBindImageTexture(unit, mId, 0, GL_FALSE, 0, access, internal_format(mFormat));
 }
 
+BufferTexture::BufferTexture(const Buffer& values) {
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  if (values.size_bytes() / sizeof(float) > static_cast<std::size_t>(max_texels))
+    throw std::runtime_error("BufferTexture: " + std::to_string(values.size_bytes() / sizeof(float)) +
+                             " texels exceed GL_MAX_TEXTURE_BUFFER_SIZE " + std::to_string(max_texels) +
+                             " (process in tiles)");
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &mId);
+  glTextureBuffer(mId, GL_R32F, values.id());
+}
+
+BufferTexture::~BufferTexture() {
+  if (mId) glDeleteTextures(1, &mId);
+}
+
+BufferTexture::BufferTexture(BufferTexture&& other) noexcept : mId(std::exchange(other.mId, 0)) {}
+
+BufferTexture& BufferTexture::operator=(BufferTexture&& other) noexcept {
+  if (this != &other) {
+    if (mId) glDeleteTextures(1, &mId);
+    mId = std::exchange(other.mId, 0);
+  }
+  return *this;
+}
+
+void BufferTexture::bind_sampler(unsigned unit) const { glBindTextureUnit(unit, mId); }
+
 }  // namespace skylit::gpu

@@ -78,4 +78,25 @@ class Texture2D {
   TextureFormat mFormat = TextureFormat::R32F;
 };
 
+// A buffer texture (samplerBuffer, texelFetch by index) viewing a Buffer as r32f.
+// Mesa llvmpipe gathers texel fetches with vector code, where an SSBO load with
+// per-invocation offsets is a scalar loop over the SIMD lanes: the march reads its
+// heights and pyramid through these. The Buffer must outlive the view.
+class BufferTexture {
+ public:
+  BufferTexture() = default;
+  // Throws std::runtime_error if the buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE texels.
+  explicit BufferTexture(const Buffer& r32f_values);
+  ~BufferTexture();
+  BufferTexture(BufferTexture&& other) noexcept;
+  BufferTexture& operator=(BufferTexture&& other) noexcept;
+  BufferTexture(const BufferTexture&) = delete;
+  BufferTexture& operator=(const BufferTexture&) = delete;
+
+  void bind_sampler(unsigned unit) const;  // samplerBuffer at `unit`
+
+ private:
+  std::uint32_t mId = 0;
+};
+
 }  // namespace skylit::gpu

@@ -257,6 +257,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("SCHEDULE_BINDING", kSchedule)
         .set("LEVELS_BINDING", kLevels)
         .set("COEFFS_BINDING", kCoeffs)
+        .set("RAY_TEXTURES", 1)  // heights, row spacing, coefficients: buffer textures at those units
         .set("SUBSAMPLE", options.subsample)
         .set("COARSE_SIGMA_BINDING", kCoarseSigma)
         .set("VALID_BINDING", kValid);
@@ -472,10 +473,18 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   sigma.bind_storage(kSigma);
   k.field.valid().bind_storage(kValid);
   output.bind_storage(kOutput);
+  // The multi-resolution march reads heights, row spacings and coefficients through
+  // buffer textures (views of the resident buffers, texture units = their bindings).
+  BufferTexture heights_tex, row_dx_tex, coeffs_tex;
   if (!mOptions.exact) {
     k.schedule.buffer().bind_storage(kSchedule);
     (k.pyramid ? k.pyramid->level_table() : k.no_levels).bind_storage(kLevels);
-    (k.pyramid ? k.pyramid->coeffs() : k.no_coeffs).bind_storage(kCoeffs);
+    heights_tex = BufferTexture(k.field.heights());
+    row_dx_tex = BufferTexture(k.field.row_dx());
+    coeffs_tex = BufferTexture(k.pyramid ? k.pyramid->coeffs() : k.no_coeffs);
+    heights_tex.bind_sampler(kHeights);
+    row_dx_tex.bind_sampler(kRowDx);
+    coeffs_tex.bind_sampler(kCoeffs);
   }
   if (needs_visibility(mProduct)) {
     k.wedge.bind_storage(kWedge);

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# End-to-end CLI timing against gdaldem on the same DEM (issue 5's CI-machine target:
+# a 1024² `shade -p shaded` at default quality, wall time including I/O, and its ratio
+# to `gdaldem hillshade -multidirectional`). Usage: scripts/bench_cli.sh [SIZE] [RUNS]
+# after a release build (build/bin/skylit). Prints one line per command: best and
+# median wall time over RUNS.
+set -euo pipefail
+size=${1:-1024}
+runs=${2:-3}
+here=$(cd "$(dirname "$0")/.." && pwd)
+skylit="$here/build/bin/skylit"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$skylit" scene -o "$tmp/dem.tif" --size "$size" -q
+
+time_runs() {  # label, command...: best and median wall seconds over $runs runs
+  local label=$1; shift
+  local times=()
+  for ((r = 0; r < runs; ++r)); do
+    local t0 t1
+    t0=$(date +%s.%N)
+    "$@" >/dev/null 2>&1
+    t1=$(date +%s.%N)
+    times+=("$(echo "$t1 - $t0" | bc)")
+  done
+  printf '%s\n' "${times[@]}" | sort -n | awk -v l="$label" '{a[NR]=$1} END {printf "%-60s best %6.2f s  median %6.2f s\n", l, a[1], a[int((NR+1)/2)]}'
+}
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "GL: $("$skylit" bench --help >/dev/null 2>&1; eglinfo -B 2>/dev/null | grep -m1 'OpenGL core profile renderer' | cut -d: -f2 | xargs || true)"
+time_runs "skylit shade ${size}² -p shaded (default quality, auto backend)" \
+  "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded.png" -p shaded -q --overwrite
+time_runs "skylit shade ${size}² -p shaded --subsample 2" \
+  "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded2.png" -p shaded --subsample 2 -q --overwrite
+time_runs "skylit shade ${size}² -p shaded --quality fast --subsample 4" \
+  "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded4.png" -p shaded --quality fast --subsample 4 -q --overwrite
+time_runs "gdaldem hillshade -multidirectional ${size}² (PNG)" \
+  gdaldem hillshade -multidirectional -q -of PNG "$tmp/dem.tif" "$tmp/gd.png"

@@ -42,10 +42,17 @@ std::string default_backend() { return backend_names().front(); }
 
 shading::ProductBands compute_with_backend(const std::string& backend, const terrain::HeightField& field,
                                            shading::Product product, const shading::ProductOptions& options,
-                                           const shading::ProgressCallback& progress) {
-  if (backend == "reference") return shading::compute_product(field, product, options, progress);
+                                           const shading::ProgressCallback& progress, std::string* used) {
+  auto note = [used](const std::string& what) {
+    if (used) *used = what;
+  };
+  const auto reference = [&](const std::string& why) {
+    note("reference (CPU" + (why.empty() ? std::string() : "; " + why) + ")");
+    return shading::compute_product(field, product, options, progress);
+  };
+  if (backend == "reference") return reference("");
   if ((backend == "gpu" || backend == "auto") && !gpu::gpu_supports(product, options)) {
-    if (backend == "auto") return shading::compute_product(field, product, options, progress);
+    if (backend == "auto") return reference("the GPU pipeline lacks these options");
     throw std::invalid_argument("--backend gpu cannot compute '" + std::string(shading::product_name(product)) + "'" +
                                 (options.exact && shading::uses_lighting(product, options)
                                      ? std::string(" with --exact (the sun's exact march is CPU-only)")
@@ -58,15 +65,16 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
     const auto context = try_context(&why);
     if (!context) {
       if (backend == "gpu") throw std::runtime_error("--backend gpu: " + why);
-      return shading::compute_product(field, product, options, progress);  // auto: no GL 4.5 here
+      return reference("no OpenGL 4.5 context");  // auto: no GL 4.5 here
     }
+    note("gpu (" + context->renderer() + ", " + context->platform() + ")");
     if (backend == "gpu") return run_gpu(*context, field, product, options, progress);
     try {
       return run_gpu(*context, field, product, options, progress);
     } catch (const std::runtime_error& e) {  // e.g. a field over the GPU's buffer limits
       std::cerr << "skylit: note: the gpu backend failed (" << one_line(e.what())
                 << "); computing with the reference backend\n";
-      return shading::compute_product(field, product, options, progress);
+      return reference("the gpu backend failed");
     }
   }
   std::string known;

@@ -23,9 +23,10 @@ std::string default_backend();
 // Throws std::invalid_argument for an unknown backend or `gpu` with a product it does
 // not have (message names the product and suggests reference/auto), std::runtime_error
 // when the backend cannot run here ("--backend gpu: no OpenGL 4.5 context could be created: …",
-// one line).
+// one line). `used`, if given, gets what computed it, e.g. "gpu (llvmpipe (LLVM 15.0.6,
+// 256 bits), EGL surfaceless)" or "reference (CPU; no OpenGL 4.5 context: …)".
 shading::ProductBands compute_with_backend(const std::string& backend, const terrain::HeightField& field,
                                            shading::Product product, const shading::ProductOptions& options,
-                                           const shading::ProgressCallback& progress);
+                                           const shading::ProgressCallback& progress, std::string* used = nullptr);
 
 }  // namespace skylit::app

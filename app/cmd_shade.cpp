@@ -106,8 +106,10 @@ int run_shade(const ShadeArgs& a) {
   }
 
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); });
+  std::string used;
+  const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); }, &used);
   bar.finish();
+  if (!a.quiet) std::cerr << "skylit: computed on " << used << "\n";
   write_product(out, field, bands);
   if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
                           << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";

@@ -91,6 +91,18 @@ TEST(CliShade, BuiltInSceneWritesPng) {
   EXPECT_EQ(o.type, GDT_Byte);
 }
 
+TEST(CliShade, SaysWhichBackendComputed) {
+  ScratchDir dir;
+  const auto r = run_skylit("shade --synthetic --size 16 --azimuths 4 -p svf --backend reference -o " + dir.file("s.tif"), true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("skylit: computed on reference (CPU)"), std::string::npos) << r.out;
+  const auto g = run_skylit("shade --synthetic --size 16 --azimuths 4 -p svf -o " + dir.file("g.tif"), true);
+  ASSERT_EQ(g.status, 0) << g.out;
+  EXPECT_TRUE(g.out.find("skylit: computed on gpu (") != std::string::npos ||
+              g.out.find("skylit: computed on reference (CPU; no OpenGL 4.5 context)") != std::string::npos)
+      << g.out;
+}
+
 TEST(CliShade, BadInputFailsCleanly) {
   ScratchDir dir;
   const std::string hill = make_hill(dir);

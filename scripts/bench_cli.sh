@@ -27,7 +27,7 @@ time_runs() {  # label, command...: best and median wall seconds over $runs runs
 }
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "GL: $("$skylit" bench --help >/dev/null 2>&1; eglinfo -B 2>/dev/null | grep -m1 'OpenGL core profile renderer' | cut -d: -f2 | xargs || true)"
+"$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p svf --azimuths 1 2>&1 | tr '\r' '\n' | grep 'computed on' || true
 time_runs "skylit shade ${size}² -p shaded (default quality, auto backend)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded.png" -p shaded -q --overwrite
 time_runs "skylit shade ${size}² -p shaded --subsample 2" \

@@ -56,8 +56,7 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
     throw std::invalid_argument("--backend gpu cannot compute '" + std::string(shading::product_name(product)) + "'" +
                                 (options.exact && shading::uses_lighting(product, options)
                                      ? std::string(" with --exact (the sun's exact march is CPU-only)")
-                                     : std::string(" with these options (it has the sky×BRDF table shading "
-                                                   "mode only)")) +
+                                     : std::string(" with these options")) +
                                 "; use --backend reference (or auto)");
   }
   if (backend == "gpu" || backend == "auto") {

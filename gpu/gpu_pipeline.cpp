@@ -24,6 +24,7 @@
 #include "gpu/gpu_products.h"
 #include "gpu/gpu_pyramid.h"
 #include "gpu/resident_field.h"
+#include "gpu/shading_setup.h"
 #include "gpu/timer.h"
 #include "shading/azimuth.h"
 #include "shading/horizon_march.h"
@@ -57,6 +58,7 @@ enum Binding : int {
   kShadow = 12,
   kSunSchedule = 13,
   kCoarseSigma = 14,
+  kGamma = 15,
 };
 
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
@@ -180,9 +182,8 @@ bool gpu_supports(Product product, const shading::ProductOptions& options) {
   const bool known = product == Product::Horizon || product == Product::Svf || product == Product::Skyview ||
                      product == Product::Shaded || product == Product::Shadow || product == Product::Irradiance;
   if (!known) return false;
-  // Shaded and irradiance: the sky × BRDF table mode only (ShadedOptions::mode).
-  if (needs_visibility(product) && options.shaded.mode != shading::ShadingMode::SkyBrdfTable) return false;
-  // Both wedge interpolations (ShadedOptions::wedge). Sub-sampling: every s that
+  // Shaded and irradiance: every ShadedOptions::mode (gpu/shading_setup.h) and both
+  // wedge interpolations (ShadedOptions::wedge). Sub-sampling: every s that
   // validate_subsample accepts; the pipeline's constructor throws its message for the others.
   if (!shading::uses_lighting(product, options)) return true;
   // Lit products: the sun's own march (not the exact one), and a lighting to use.
@@ -201,7 +202,7 @@ struct GpuProductPipeline::Impl {
   ResidentTable schedule, sun_schedule;
   Buffer no_levels, no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
-  Buffer wedge, rotation, table;  // shaded and irradiance only (table: one per channel)
+  Buffer wedge, rotation, table, gamma;  // shaded and irradiance only (gpu/shading_setup.h)
   int channels = 1;               // output bands of shaded/irradiance
   std::vector<double> sun_dni;    // lit: the sun's DNI per output channel
   double display_per_irradiance = 0.0;  // lit shaded: the tone map's factor
@@ -289,59 +290,15 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   if (needs_visibility(product)) {
     const shading::ShadedOptions& s = options.shaded;
     const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, s.wedge);
-    // The reference's shading set-up, restated (reference_pipeline.cpp keeps it inside
-    // compute_product): a shading::Shader in the sky × BRDF table mode, Lambert. Unlit:
-    // uniform sky of radiance 1 above the horizontal. Lit (LitShading there): one
-    // Shader per output channel from the lighting's sky radiance (R, G, B for a colour
-    // shaded, else its luminance). gpu_products_test / gpu_lighting_test fail if the
-    // two diverge.
-    std::vector<std::unique_ptr<shading::Shader>> lit_shaders;
-    std::vector<const shading::SkyBrdfTable*> lit_tables;
-    std::optional<shading::Shader> shader;
+    // The sky shading as the reference sets it up; gpu_products_test /
+    // gpu_lighting_test / gpu_shading_modes_test fail if the two diverge.
+    const ShadingSetup shading = shading_setup(product, options, kTable, kGamma, prod);
+    k.channels = shading.channels;
+    k.sun_dni = shading.sun_dni;
     if (lit) {
-      const shading::Lighting& l = *options.lighting;
-      const bool rgb = product == Product::Shaded && l.colour;
-      k.channels = rgb ? 3 : 1;
-      shading::ShadingSettings settings;
-      settings.order = s.sh_order;
-      for (int c = 0; c < k.channels; ++c) {
-        k.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
-        if (!l.sky) continue;
-        shading::SkyInput sky_input;
-        sky_input.radiance = shading::channel_radiance(l.sky, rgb, c);
-        lit_shaders.push_back(std::make_unique<shading::Shader>(settings, sky_input));
-        lit_tables.push_back(lit_shaders.back()->table());
-      }
-      k.display_per_irradiance = shading::shaded_display_scale(s, l);
-    } else {
-      shading::ShadingSettings settings;
-      settings.order = s.sh_order;
-      shading::SkyInput sky_input;
-      sky_input.radiance = shading::uniform_sky_radiance();
-      shader.emplace(settings, sky_input);
+      k.display_per_irradiance = shading::shaded_display_scale(s, *options.lighting);
+      prod.set("SUN_LIT", sun_lit(product, options) ? 1 : 0).set("SHADOW_BINDING", kShadow);
     }
-    const shading::SkyBrdfTable* first_table = lit ? (lit_tables.empty() ? nullptr : lit_tables[0])
-                                                   : shader->table();
-    // The grid is the default mode's either way; without a sky the lookup is unused.
-    const shading::AxisGrid grid = first_table ? first_table->grid()
-                                               : shading::table_grid_for(shading::ShadingSettings{});
-    std::vector<float> texels;
-    std::size_t table_size = 1;
-    if (lit) {
-      for (const shading::SkyBrdfTable* t : lit_tables) texels.insert(texels.end(), t->texels().begin(), t->texels().end());
-      if (!lit_tables.empty()) table_size = lit_tables[0]->texels().size();
-      if (texels.empty()) texels.assign(1, 0.0f);  // GL wants non-empty buffers bound
-    } else {
-      texels.assign(first_table->texels().begin(), first_table->texels().end());
-    }
-    if (lit) {
-      prod.set("CHANNELS", k.channels)
-          .set("HAS_SKY", lit_tables.empty() ? 0 : 1)
-          .set("SUN_LIT", sun_lit(product, options) ? 1 : 0)
-          .set("TABLE_SIZE", static_cast<int>(table_size))
-          .set("SHADOW_BINDING", kShadow);
-    }
-
     std::vector<double> occlusion_factors(s.nlp_order, 0.0);
     for (int l = 1; l < s.nlp_order; ++l) occlusion_factors[l] = sh::nlp_norm(l) / (static_cast<double>(l) * (l + 1));
     std::vector<float> rotation;
@@ -360,15 +317,12 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("WEDGE_TAPS", op.taps())
         .set("WEDGE_FIRST_TAP", op.first_tap())
         .set("WEDGE_LAST_TAP", op.first_tap() + op.taps() - 1)
-        .set("TABLE_N_THETA", grid.n_theta)
-        .set("TABLE_N_PHI", grid.n_phi)
-        .set("TABLE_THETA_MAX", grid.theta_max)
         .set("WEDGE_BINDING", kWedge)
-        .set("ROTATION_BINDING", kRotation)
-        .set("TABLE_BINDING", kTable);
+        .set("ROTATION_BINDING", kRotation);
     k.wedge = Buffer::from(op.matrix_f32());
     k.rotation = Buffer::from(std::span<const float>(rotation));
-    k.table = Buffer::from(std::span<const float>(texels));
+    k.table = Buffer::from(std::span<const float>(shading.sky));
+    k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
   }
   k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
   if (lit && k.products->has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
@@ -490,6 +444,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     k.wedge.bind_storage(kWedge);
     k.rotation.bind_storage(kRotation);
     k.table.bind_storage(kTable);
+    k.gamma.bind_storage(kGamma);
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   Buffer shadow;

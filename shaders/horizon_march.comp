@@ -35,7 +35,7 @@ layout(std430, binding = LEVELS_BINDING) readonly buffer Levels { PyramidLevel l
 // B-spline coefficients of every level, row-major, levels back to back.
 // With RAY_TEXTURES they (and heights, row spacings: horizon_ray.glsl) are read through
 // r32f buffer textures: on Mesa llvmpipe a texelFetch is a vector gather while an SSBO
-// load is a scalar loop over the SIMD lanes (≈ 30 % less march time measured there).
+// load is a scalar loop over the SIMD lanes (about 30 % less march time measured there).
 #if RAY_TEXTURES
 layout(binding = COEFFS_BINDING) uniform samplerBuffer coeffs_tex;
 float coeff(int index) { return texelFetch(coeffs_tex, index).r; }

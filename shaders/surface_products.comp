@@ -24,7 +24,10 @@
 // SH_ORDER, SH_COEFFS, NLP_ORDER, NLP_V0_SCALE (1/sqrt 2), NLP_OCCLUSION_FACTORS
 // (float[NLP_ORDER] of sqrt((2l+1)/2)/(l(l+1))), WEDGE_ROWS/COLS, WEDGE_TAPS,
 // WEDGE_FIRST_TAP, WEDGE_LAST_TAP (sh::interpolation_taps/first_tap), TABLE_N_THETA,
-// TABLE_N_PHI, TABLE_THETA_MAX; PRODUCT_IRRADIANCE, LIT (0/1); with LIT: CHANNELS,
+// TABLE_N_PHI, TABLE_THETA_MAX; SHADING_MODE (MODE_TABLE, MODE_TRIPLE or MODE_LOG_BRDF:
+// shading::ShadingMode; the SH modes shade through shading_modes.glsl (its defines),
+// log-brdf from log-visibility slices, LOG_EPS = ln eps times the NLP occlusion);
+// SH_BASIS_NORM; PRODUCT_IRRADIANCE, LIT (0/1); with LIT: CHANNELS,
 // HAS_SKY (0/1), SUN_LIT (0/1), TABLE_SIZE (floats per channel table), SHADOW_BINDING;
 // the sun's direction and DNI are uniforms (one compiled kernel for every sun).
 #include "horizon_ray.glsl"
@@ -54,9 +57,11 @@ uniform float first_distance;  // t1 (m): the multi-resolution march's first dis
 layout(std430, binding = WEDGE_BINDING) readonly buffer Wedge { float wedge_matrix[]; };
 // (cos m phi_j, sin m phi_j) at [j*SH_ORDER + m], phi_j the wedge operator's samples.
 layout(std430, binding = ROTATION_BINDING) readonly buffer Rotation { vec2 rotation[]; };
+#if SHADING_MODE == MODE_TABLE
 // shading::SkyBrdfTable::texels(), unchanged: [((layer*N_THETA + i)*N_PHI + j)*4 + c];
 // LIT: CHANNELS tables back to back, TABLE_SIZE floats each.
 layout(std430, binding = TABLE_BINDING) readonly buffer Table { float table_texels[]; };
+#endif
 #if LIT
 // Visible fraction of the solar disc per texel of the whole field (sun_shadow.comp).
 layout(std430, binding = SHADOW_BINDING) readonly buffer Shadow { float sun_shadow[]; };
@@ -119,7 +124,20 @@ void nlpVisibility(float e, out float v[NLP_ORDER]) {
   }
 }
 
-int shIndex(int l, int m) { return l * (l + 1) + m; }
+#if SHADING_MODE == MODE_LOG_BRDF
+// Log-visibility slice ln(eps) o(e), o = (sqrt 2, 0, ...) - v the NLP occlusion: twin
+// of sh::nlp_log_visibility (o_0 = (1 + sin e)/sqrt 2 without cancellation).
+void nlpLogVisibility(float e, out float v[NLP_ORDER]) {
+  nlpVisibility(e, v);
+  v[0] = LOG_EPS * (1.0 + sin(e)) * NLP_V0_SCALE;
+  for (int l = 1; l < NLP_ORDER; ++l) v[l] *= -LOG_EPS;
+}
+#endif
+
+#include "sh_basis.glsl"
+#if SHADING_MODE != MODE_TABLE
+#include "shading_modes.glsl"
+#endif
 
 // vis += Rz(phi_j) * M * [taps], taps[s] the slice at sample j + WEDGE_FIRST_TAP + s
 // (mod W): samples j, j+1 (linear) or j-1 ... j+2 (B-spline).
@@ -143,6 +161,7 @@ void addWedge(int j, float taps[WEDGE_TAPS][NLP_ORDER], inout float vis[SH_COEFF
   }
 }
 
+#if SHADING_MODE == MODE_TABLE
 float tableTexel(int base, int k, int i, int j) {
   return table_texels[base + (((k / 4) * TABLE_N_THETA + i) * TABLE_N_PHI + j) * 4 + (k % 4)];
 }
@@ -171,6 +190,7 @@ float shadeTable(float vis[SH_COEFFS], vec3 axis, int base) {
   }
   return sum;
 }
+#endif
 #endif
 
 void main() {
@@ -231,9 +251,18 @@ void main() {
     float tangent_floor = -atan(dot(n.xy, headings[k]) / n.z);
     float e = clamp(max(rawSigma(k, j, i), tangent_floor), -HALF_PI, HALF_PI);
     for (int s = 0; s + 1 < WEDGE_TAPS; ++s) taps[s] = taps[s + 1];
+#if SHADING_MODE == MODE_LOG_BRDF
+    nlpLogVisibility(e, taps[WEDGE_TAPS - 1]);
+#else
     nlpVisibility(e, taps[WEDGE_TAPS - 1]);
+#endif
     if (t >= WEDGE_LAST_TAP) addWedge(t - WEDGE_LAST_TAP, taps, vis);
   }
+  // log-brdf: vis holds the log-visibility.
+#if SHADING_MODE != MODE_TABLE && (!LIT || HAS_SKY)
+  float transfer[SH_COEFFS];  // channel-independent: V * F or exp*(V_log + F_log)
+  shadedTransfer(vis, n, transfer);  // Lambert: the lobe axis is the normal
+#endif
 #if LIT
 #if SUN_LIT
   float sun = max(dot(n, sun_dir), 0.0) * sun_shadow[texel];
@@ -242,14 +271,22 @@ void main() {
 #endif
   for (int c = 0; c < CHANNELS; ++c) {
 #if HAS_SKY
+#if SHADING_MODE == MODE_TABLE
     float sky = PI * shadeTable(vis, n, c * TABLE_SIZE);
+#else
+    float sky = PI * skyDot(transfer, c);
+#endif
 #else
     float sky = 0.0;
 #endif
     values[chunkIndex(c, j, i)] = max(sky + sun_dni[c] * sun, 0.0);
   }
 #else
+#if SHADING_MODE == MODE_TABLE
   values[out_texel] = shadeTable(vis, n, 0);    // Lambert: the lobe axis is the normal
+#else
+  values[out_texel] = skyDot(transfer, 0);
+#endif
 #endif
 #endif
 }

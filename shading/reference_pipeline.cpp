@@ -98,8 +98,8 @@ std::vector<Heading> math_headings(int w) {
   return h;
 }
 
-// Sky input of a Shader in `mode`: the full-frequency radiance (table mode) or its
-// SH projection over the upper hemisphere (the skies are 0 below the horizon).
+}  // namespace
+
 SkyInput sky_input(ShadingMode mode, int order, Radiance radiance) {
   SkyInput in;
   if (mode != ShadingMode::SkyBrdfTable)
@@ -107,6 +107,8 @@ SkyInput sky_input(ShadingMode mode, int order, Radiance radiance) {
   in.radiance = std::move(radiance);
   return in;
 }
+
+namespace {
 
 // Lambert shading of the sky light for one channel: ∫ L·V·max(n·ω, 0)/π dω, in the
 // chosen mode; LogBrdf works from the log-visibility, the others from V.

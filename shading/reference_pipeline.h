@@ -6,6 +6,7 @@
 #include "shading/horizon_exact.h"
 #include "shading/horizon_march.h"
 #include "shading/products.h"
+#include "shading/shading_modes.h"
 #include "shading/sky_brdf_table.h"
 #include "shading/sun_light.h"
 
@@ -48,5 +49,8 @@ SunShadowOptions sun_shadow_options(const ProductOptions& options);
 Radiance uniform_sky_radiance();
 Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, int channel);
 double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting);
+// Sky input of a Shader in `mode`: the full-frequency radiance (table mode) or its
+// SH projection over the upper hemisphere (the skies are 0 below the horizon).
+SkyInput sky_input(ShadingMode mode, int order, Radiance radiance);
 
 }  // namespace skylit::shading

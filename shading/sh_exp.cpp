@@ -182,7 +182,7 @@ void exp_hyb(std::span<const T> f, std::span<T> out, const HybOptions& opt, HybI
   inf.norm = m;
 
   // 2. k = smallest with m/2^k ≤ t, capped; beyond the cap ‖h‖ is clamped to t.
-  const int kmax = std::clamp(opt.max_squarings, 0, 30);
+  const int kmax = std::clamp(opt.max_squarings, 0, kHybSquaringsCap);
   int k = 0;
   double mh = m;
   while (mh > opt.threshold && k < kmax) {
@@ -243,9 +243,9 @@ void exp_hyb(std::span<const T> f, std::span<T> out, const HybOptions& opt, HybI
     }
     T gmax = 0;
     for (std::size_t i = 0; i < nc; ++i) gmax = std::max(gmax, std::abs(g[i]));
-    const T lmax = std::log(std::numeric_limits<T>::max()) - std::log(gmax) - 1;
+    const T lmax = std::log(std::numeric_limits<T>::max()) - std::log(gmax) - static_cast<T>(kHybOverflowMargin);
     lsum = std::min(lsum, lmax);
-    if (lsum < std::log(std::numeric_limits<T>::min()) + 8) {
+    if (lsum < std::log(std::numeric_limits<T>::min()) + static_cast<T>(kHybFlushMargin)) {
       std::fill(out.begin(), out.end(), T(0));
       inf.flushed = true;
       return;

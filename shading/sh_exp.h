@@ -57,6 +57,14 @@ struct HybOptions {
   bool clamp_output_dc = true;
 };
 
+// Output guards of renormalised HYB (natural-log margins): the exponent of the scale
+// stays kHybOverflowMargin below overflow of the largest coefficient, and results
+// whose scale is below ln(T_min) + kHybFlushMargin are flushed to 0.
+inline constexpr double kHybOverflowMargin = 1.0;
+inline constexpr double kHybFlushMargin = 8.0;
+// HybOptions::max_squarings is clamped to [0, kHybSquaringsCap].
+inline constexpr int kHybSquaringsCap = 30;
+
 struct HybInfo {
   int squarings = 0;
   double norm = 0.0;           // ‖f̂‖ after the log-floor clamp

@@ -240,11 +240,13 @@ TEST_F(GpuLightingTest, SupportAndFallbackConditions) {
     EXPECT_FALSE(gpu_supports(p, exact)) << shading::product_name(p);
     EXPECT_THROW(GpuProductPipeline(p, exact), std::invalid_argument);
   }
-  ProductOptions other_mode = lit;  // the GPU shades with the sky × BRDF table only
-  other_mode.shaded.mode = shading::ShadingMode::TripleProduct;
-  EXPECT_FALSE(gpu_supports(Product::Irradiance, other_mode));
-  EXPECT_FALSE(gpu_supports(Product::Shaded, other_mode));
-  EXPECT_TRUE(gpu_supports(Product::Shadow, other_mode));
+  ProductOptions other_mode = lit;  // every shading mode (gpu_shading_modes_test checks the SH ones)
+  for (shading::ShadingMode m : {shading::ShadingMode::TripleProduct, shading::ShadingMode::LogBrdf}) {
+    other_mode.shaded.mode = m;
+    EXPECT_TRUE(gpu_supports(Product::Irradiance, other_mode));
+    EXPECT_TRUE(gpu_supports(Product::Shaded, other_mode));
+    EXPECT_TRUE(gpu_supports(Product::Shadow, other_mode));
+  }
   EXPECT_FALSE(gpu_supports(Product::Shadow, ProductOptions{}));      // no lighting
   EXPECT_FALSE(gpu_supports(Product::Irradiance, ProductOptions{}));  // no lighting
   // No sky model (sun only): the sky part is left out, as the reference does.

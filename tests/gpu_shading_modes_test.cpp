@@ -13,6 +13,16 @@
 //    |Δ| ≤ 1e-3·E + 0.02·DNI on all (the sun's shadow fraction in a penumbra).
 // The two interpolations must differ by more than the tolerance somewhere, so the
 // B-spline path is really taken (not the linear operator under another name).
+//
+// The SH shading modes (ShadedOptions::mode triple and log-brdf, shaders/
+// shading_modes.glsl) against the reference the same way, unlit `shaded` and lit
+// `irradiance`, with the same bounds: the triple product adds one sparse Γ product and a
+// rotated ZH (a few hundred float terms per coefficient, ~1e-6 relative). The log-BRDF
+// route's float HYB squares k ≤ 12 times; each squaring doubles the relative error
+// of the base, so ≤ 2^k·(product rounding ~1e-6). With the sun off (DNI 0, no
+// penumbra slack) the sky irradiance must match to 1e-4 relative on every texel: on
+// this field ‖f̂‖ ≲ 8 (k ≤ 5, ≤ ~3e-5 for HYB); measured 3.5e-6 triple, 9.5e-6 log-brdf.
+// Each mode must differ from the table mode by more than the tolerance somewhere.
 #include "gpu_test_util.h"
 
 #include <gtest/gtest.h>
@@ -25,6 +35,7 @@
 #include "gpu/gpu_pipeline.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/shading_modes.h"
 #include "shading/sky_model.h"
 #include "shading/wedge.h"
 #include "terrain/synthetic.h"
@@ -40,6 +51,7 @@ using sh::WedgeInterpolation;
 constexpr double kShadedTolCodes = 1.0;
 constexpr double kShadedMaxCodes = 2.0;
 constexpr double kIrradianceRelTol = 1e-3;
+constexpr double kSkyRelTol = 1e-4;  // sky-only irradiance, SH modes (argued above)
 constexpr double kShadowTol = 0.02;  // the shadow fraction's bound (gpu_lighting_test)
 constexpr double kMinFraction = 0.99;
 
@@ -141,6 +153,64 @@ TEST_F(GpuShadingModesTest, WedgeInterpolationsMatchReference) {
   const Diff between = compare(irradiance[1], irradiance[0], kIrradianceRelTol, true, 1e300, 0.0);
   std::cout << "B-spline vs linear irradiance (GPU): max rel " << between.max_rel << "\n";
   EXPECT_GT(between.max_rel, 10.0 * kIrradianceRelTol);
+}
+
+TEST_F(GpuShadingModesTest, ShModesMatchReference) {
+  const terrain::HeightField field = small_field();
+  const ProductOptions table_lit = options(WedgeInterpolation::Linear, true);
+  const ProductBands table_irradiance = GpuProductPipeline(Product::Irradiance, table_lit).compute(field);
+  for (shading::ShadingMode mode : {shading::ShadingMode::TripleProduct, shading::ShadingMode::LogBrdf}) {
+    const std::string mode_name(shading::to_string(mode));
+    SCOPED_TRACE(mode_name);
+    ProductOptions unlit = options(WedgeInterpolation::Linear, false);
+    unlit.shaded.mode = mode;
+    ASSERT_TRUE(gpu_supports(Product::Shaded, unlit));
+    const ProductBands gpu_shaded = GpuProductPipeline(Product::Shaded, unlit).compute(field);
+    const ProductBands cpu_shaded = shading::compute_product(field, Product::Shaded, unlit);
+    const Diff s = compare(gpu_shaded, cpu_shaded, kShadedTolCodes, false, kShadedMaxCodes, 0.0);
+    std::cout << "[ " << mode_name << " ] shaded: max |d| " << s.max_abs << " codes, within 1: "
+              << 100.0 * s.fraction_within << "%\n";
+    EXPECT_EQ(s.nan_mismatches, 0);
+    EXPECT_EQ(s.over_all_bound, 0);
+    EXPECT_GE(s.fraction_within, kMinFraction);
+
+    ProductOptions lit = table_lit;
+    lit.shaded.mode = mode;
+    ASSERT_TRUE(gpu_supports(Product::Irradiance, lit));
+    const ProductBands gpu = GpuProductPipeline(Product::Irradiance, lit).compute(field);
+    const ProductBands cpu = shading::compute_product(field, Product::Irradiance, lit);
+    const double dni = sky::luminance(lit.lighting->sun.dni);
+    const Diff e = compare(gpu, cpu, kIrradianceRelTol, true, kShadowTol * dni, kIrradianceRelTol);
+    std::cout << "[ " << mode_name << " ] irradiance: max |d| " << e.max_abs << " W/m^2, max rel " << e.max_rel
+              << ", within 1e-3: " << 100.0 * e.fraction_within << "%\n";
+    EXPECT_EQ(e.nan_mismatches, 0);
+    EXPECT_EQ(e.over_all_bound, 0);
+    EXPECT_GE(e.fraction_within, kMinFraction);
+    // Sky alone (DNI 0): the SH shading without the shadow's penumbra slack.
+    ProductOptions sky_only = lit;
+    sky_only.lighting->sun.dni = sky::Rgb(0.0);
+    const Diff k = compare(GpuProductPipeline(Product::Irradiance, sky_only).compute(field),
+                           shading::compute_product(field, Product::Irradiance, sky_only), kSkyRelTol, true, 0.0,
+                           kSkyRelTol);
+    std::cout << "[ " << mode_name << " ] sky-only irradiance: max |d| " << k.max_abs << " W/m^2, max rel "
+              << k.max_rel << "\n";
+    EXPECT_EQ(k.nan_mismatches, 0);
+    EXPECT_EQ(k.over_all_bound, 0);
+    // Colour `shaded` (one sky SH per channel R, G, B): codes, as unlit.
+    ProductOptions colour = lit;
+    colour.lighting->colour = true;
+    const Diff c = compare(GpuProductPipeline(Product::Shaded, colour).compute(field),
+                           shading::compute_product(field, Product::Shaded, colour), kShadedTolCodes, false,
+                           kShadedMaxCodes, 0.0);
+    std::cout << "[ " << mode_name << " ] colour shaded: max |d| " << c.max_abs << " codes, within 1: "
+              << 100.0 * c.fraction_within << "%\n";
+    EXPECT_EQ(c.nan_mismatches, 0);
+    EXPECT_EQ(c.over_all_bound, 0);
+    EXPECT_GE(c.fraction_within, kMinFraction);
+    const Diff vs_table = compare(gpu, table_irradiance, kIrradianceRelTol, true, 1e300, 0.0);
+    std::cout << "[ " << mode_name << " ] vs table irradiance (GPU): max rel " << vs_table.max_rel << "\n";
+    EXPECT_GT(vs_table.max_rel, 10.0 * kIrradianceRelTol);
+  }
 }
 
 }  // namespace

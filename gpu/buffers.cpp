@@ -137,15 +137,15 @@ void Texture2D::bind_image(unsigned unit, bool read, bool write) const {
   glBindImageTexture(unit, mId, 0, GL_FALSE, 0, access, internal_format(mFormat));
 }
 
-BufferTexture::BufferTexture(const Buffer& values) {
+BufferTexture::BufferTexture(const Buffer& values, TextureFormat format) {
   GLint max_texels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  if (values.size_bytes() / sizeof(float) > static_cast<std::size_t>(max_texels))
-    throw std::runtime_error("BufferTexture: " + std::to_string(values.size_bytes() / sizeof(float)) +
-                             " texels exceed GL_MAX_TEXTURE_BUFFER_SIZE " + std::to_string(max_texels) +
-                             " (process in tiles)");
+  const std::size_t texels = values.size_bytes() / (sizeof(float) * (format == TextureFormat::R32F ? 1 : 4));
+  if (texels > static_cast<std::size_t>(max_texels))
+    throw std::runtime_error("BufferTexture: " + std::to_string(texels) + " texels exceed GL_MAX_TEXTURE_BUFFER_SIZE " +
+                             std::to_string(max_texels) + " (process in tiles)");
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &mId);
-  glTextureBuffer(mId, GL_R32F, values.id());
+  glTextureBuffer(mId, internal_format(format), values.id());
 }
 
 BufferTexture::~BufferTexture() {

@@ -78,7 +78,7 @@ class Texture2D {
   TextureFormat mFormat = TextureFormat::R32F;
 };
 
-// A buffer texture (samplerBuffer, texelFetch by index) viewing a Buffer as r32f.
+// A buffer texture (samplerBuffer, texelFetch by index) viewing a Buffer as r32f or rgba32f.
 // Mesa llvmpipe gathers texel fetches with vector code, where an SSBO load with
 // per-invocation offsets is a scalar loop over the SIMD lanes: the march reads its
 // heights and pyramid through these. The Buffer must outlive the view.
@@ -86,7 +86,7 @@ class BufferTexture {
  public:
   BufferTexture() = default;
   // Throws std::runtime_error if the buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE texels.
-  explicit BufferTexture(const Buffer& r32f_values);
+  explicit BufferTexture(const Buffer& values, TextureFormat format = TextureFormat::R32F);
   ~BufferTexture();
   BufferTexture(BufferTexture&& other) noexcept;
   BufferTexture& operator=(BufferTexture&& other) noexcept;
@@ -94,6 +94,7 @@ class BufferTexture {
   BufferTexture& operator=(const BufferTexture&) = delete;
 
   void bind_sampler(unsigned unit) const;  // samplerBuffer at `unit`
+  std::uint32_t id() const { return mId; }  // 0: none
 
  private:
   std::uint32_t mId = 0;

@@ -203,6 +203,7 @@ struct GpuProductPipeline::Impl {
   Buffer no_levels, no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
   Buffer wedge, rotation, table, gamma;  // shaded and irradiance only (gpu/shading_setup.h)
+  BufferTexture wedge_tex, rotation_tex, table_tex;  // the surface kernel's views (table: table mode)
   int channels = 1;               // output bands of shaded/irradiance
   std::vector<double> sun_dni;    // lit: the sun's DNI per output channel
   double display_per_irradiance = 0.0;  // lit shaded: the tone map's factor
@@ -323,6 +324,9 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     k.rotation = Buffer::from(std::span<const float>(rotation));
     k.table = Buffer::from(std::span<const float>(shading.sky));
     k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
+    k.wedge_tex = BufferTexture(k.wedge);
+    k.rotation_tex = BufferTexture(k.rotation);
+    if (s.mode == shading::ShadingMode::SkyBrdfTable) k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
   k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
   if (lit && k.products->has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
@@ -424,7 +428,9 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   k.field.heights().bind_storage(kHeights);  // after the pyramid build, which binds its own
   k.field.row_dx().bind_storage(kRowDx);
   k.headings.bind_storage(kHeadings);
-  sigma.bind_storage(kSigma);
+  sigma.bind_storage(kSigma);  // the march writes it; the surface kernel reads this view:
+  const BufferTexture sigma_tex(sigma);
+  sigma_tex.bind_sampler(kSigma);
   k.field.valid().bind_storage(kValid);
   output.bind_storage(kOutput);
   // The multi-resolution march reads heights, row spacings and coefficients through
@@ -441,9 +447,10 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     coeffs_tex.bind_sampler(kCoeffs);
   }
   if (needs_visibility(mProduct)) {
-    k.wedge.bind_storage(kWedge);
-    k.rotation.bind_storage(kRotation);
-    k.table.bind_storage(kTable);
+    k.wedge_tex.bind_sampler(kWedge);  // texture units = the bindings
+    k.rotation_tex.bind_sampler(kRotation);
+    k.table.bind_storage(kTable);  // the sky SH of the SH modes
+    if (k.table_tex.id()) k.table_tex.bind_sampler(kTable);
     k.gamma.bind_storage(kGamma);
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).

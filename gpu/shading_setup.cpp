@@ -103,6 +103,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
     for (const auto& sh : shaders) out.sky.insert(out.sky.end(), sh->table()->texels().begin(), sh->table()->texels().end());
     if (!shaders.empty()) table_size = shaders[0]->table()->texels().size();
     d.set("TABLE_N_THETA", grid.n_theta).set("TABLE_N_PHI", grid.n_phi).set("TABLE_THETA_MAX", grid.theta_max);
+    d.set("TABLE_LAYERS", shaders.empty() ? 1 : shaders[0]->table()->layers());
     if (lit) d.set("TABLE_SIZE", static_cast<int>(table_size));
   } else {
     for (const sh::Vec& v : sky_sh)
@@ -124,7 +125,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
       set_hyb_defines(settings.log_hyb, d);
     }
   }
-  if (out.sky.empty()) out.sky.assign(1, 0.0f);
+  if (out.sky.empty()) out.sky.assign(4, 0.0f);  // GL wants non-empty buffers (one rgba texel)
   if (out.gamma.empty()) out.gamma.assign(2, 0u);
   return out;
 }

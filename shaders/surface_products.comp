@@ -37,7 +37,9 @@
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 1) in;
 
 layout(std430, binding = HEADINGS_BINDING) readonly buffer Headings { vec2 headings[]; };
-layout(std430, binding = SIGMA_BINDING) readonly buffer Sigma { float sigma[]; };
+// The march's sigma buffer, read as an r32f buffer texture: on Mesa llvmpipe a
+// texelFetch is a vector gather where an SSBO load is a scalar loop over the SIMD lanes.
+layout(binding = SIGMA_BINDING) uniform samplerBuffer sigma_tex;
 // 1 byte per texel (1 = valid), four texels per word, little end first.
 layout(std430, binding = VALID_BINDING) readonly buffer Valid { uint valid_bytes[]; };
 // Raw horizons (rad) of the row chunk: [(k*chunk_rows + j - row_offset)*W + i].
@@ -54,13 +56,16 @@ uniform float first_distance;  // t1 (m): the multi-resolution march's first dis
 #if NEEDS_VIS
 // sh::WedgeOperator::matrix_f32(): WEDGE_ROWS x WEDGE_COLS, row-major; column
 // s*NLP_ORDER + l' multiplies slice j+s, coefficient l'.
-layout(std430, binding = WEDGE_BINDING) readonly buffer Wedge { float wedge_matrix[]; };
-// (cos m phi_j, sin m phi_j) at [j*SH_ORDER + m], phi_j the wedge operator's samples.
-layout(std430, binding = ROTATION_BINDING) readonly buffer Rotation { vec2 rotation[]; };
+// The per-pipeline tables are buffer textures too (texture units = the bindings).
+layout(binding = WEDGE_BINDING) uniform samplerBuffer wedge_tex;  // r32f
+// (cos m phi_j, sin m phi_j) at texels 2(j*SH_ORDER + m) and +1, phi_j the wedge
+// operator's samples.
+layout(binding = ROTATION_BINDING) uniform samplerBuffer rotation_tex;  // r32f
 #if SHADING_MODE == MODE_TABLE
 // shading::SkyBrdfTable::texels(), unchanged: [((layer*N_THETA + i)*N_PHI + j)*4 + c];
 // LIT: CHANNELS tables back to back, TABLE_SIZE floats each.
-layout(std430, binding = TABLE_BINDING) readonly buffer Table { float table_texels[]; };
+// Read as rgba32f: one texel = the 4 coefficients of one layer at one grid node.
+layout(binding = TABLE_BINDING) uniform samplerBuffer table_tex;
 #endif
 #if LIT
 // Visible fraction of the solar disc per texel of the whole field (sun_shadow.comp).
@@ -87,7 +92,7 @@ vec3 hornNormal(int i, int j) {
 }
 
 int chunkIndex(int k, int j, int i) { return (k * chunk_rows + j - row_offset) * grid_width + i; }
-float rawSigma(int k, int j, int i) { return sigma[chunkIndex(k, j, i)]; }
+float rawSigma(int k, int j, int i) { return texelFetch(sigma_tex, chunkIndex(k, j, i)).r; }
 
 #if PRODUCT == PRODUCT_SKYVIEW
 // (1/pi) * integral over e in (lo, pi/2] of max(n.w(e), 0) cos e de for the horizontal
@@ -147,12 +152,13 @@ void addWedge(int j, float taps[WEDGE_TAPS][NLP_ORDER], inout float vis[SH_COEFF
     int row = r * WEDGE_COLS;
     float acc = 0.0;
     for (int s = 0; s < WEDGE_TAPS; ++s)
-      for (int l = 0; l < NLP_ORDER; ++l) acc += wedge_matrix[row + s * NLP_ORDER + l] * taps[s][l];
+      for (int l = 0; l < NLP_ORDER; ++l) acc += texelFetch(wedge_tex, row + s * NLP_ORDER + l).r * taps[s][l];
     wedge[r] = acc;
   }
   for (int l = 0; l < SH_ORDER; ++l) vis[shIndex(l, 0)] += wedge[shIndex(l, 0)];
   for (int m = 1; m < SH_ORDER; ++m) {
-    vec2 cs = rotation[j * SH_ORDER + m];
+    int at = 2 * (j * SH_ORDER + m);
+    vec2 cs = vec2(texelFetch(rotation_tex, at).r, texelFetch(rotation_tex, at + 1).r);
     for (int l = m; l < SH_ORDER; ++l) {
       float p = wedge[shIndex(l, m)], q = wedge[shIndex(l, -m)];
       vis[shIndex(l, m)] += p * cs.x - q * cs.y;
@@ -162,8 +168,9 @@ void addWedge(int j, float taps[WEDGE_TAPS][NLP_ORDER], inout float vis[SH_COEFF
 }
 
 #if SHADING_MODE == MODE_TABLE
-float tableTexel(int base, int k, int i, int j) {
-  return table_texels[base + (((k / 4) * TABLE_N_THETA + i) * TABLE_N_PHI + j) * 4 + (k % 4)];
+// Coefficients 4*layer ... 4*layer+3 at grid node (i, j); `base` in floats.
+vec4 tableQuad(int base, int layer, int i, int j) {
+  return texelFetch(table_tex, base / 4 + (layer * TABLE_N_THETA + i) * TABLE_N_PHI + j);
 }
 
 // V . T(axis) with the bilinear lookup of shading::SkyBrdfTable::lookup; `base` is the
@@ -183,10 +190,11 @@ float shadeTable(float vis[SH_COEFFS], vec3 axis, int base) {
   int j1 = (j0 + 1) % TABLE_N_PHI;
   float w00 = (1.0 - fu) * (1.0 - fv), w01 = (1.0 - fu) * fv, w10 = fu * (1.0 - fv), w11 = fu * fv;
   float sum = 0.0;
-  for (int k = 0; k < SH_COEFFS; ++k) {
-    float t = w00 * tableTexel(base, k, i0, j0) + w01 * tableTexel(base, k, i0, j1) +
-              w10 * tableTexel(base, k, i0 + 1, j0) + w11 * tableTexel(base, k, i0 + 1, j1);
-    sum += vis[k] * t;
+  for (int layer = 0; layer < TABLE_LAYERS; ++layer) {
+    vec4 t = w00 * tableQuad(base, layer, i0, j0) + w01 * tableQuad(base, layer, i0, j1) +
+             w10 * tableQuad(base, layer, i0 + 1, j0) + w11 * tableQuad(base, layer, i0 + 1, j1);
+    for (int c = 0; c < 4; ++c)
+      if (4 * layer + c < SH_COEFFS) sum += vis[4 * layer + c] * t[c];
   }
   return sum;
 }

@@ -8,6 +8,7 @@
 // or several edits since, is uploaded whole.
 // Runs on Mesa llvmpipe where there is no GPU.
 #include "gpu_test_util.h"
+#include "gpu_tolerances.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ using shading::ProductBands;
 using terrain::HeightField;
 using terrain::PixelRect;
 
-constexpr double kSvfTol = 2e-3;  // gpu_products_test.cpp
+using namespace tolerance;  // gpu_tolerances.h
 
 using GpuIncrementalTest = testing::GpuTest;
 

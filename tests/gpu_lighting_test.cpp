@@ -4,25 +4,11 @@
 // synthetic field and a real DEM crop (shared/dem, skipped if missing), sun at 10° and
 // 45°, uniform and Preetham skies, and a sun below the horizon.
 //
-// Tolerances (float32 GPU vs double CPU):
-//  * shadow ≤ 0.02 on ≥ 99% of texels (and ≤ 0.25 on all): the sun's horizon σ is a max
-//    of slopes taken from float heights with the receiver's height subtracted before
-//    interpolating and the step offset kept apart from the texel index, so a slope
-//    carries ~1e-7 relative rounding (~1e-6 rad); in the disc frame (units of the
-//    0.00465 rad radius) that is ~2e-4, and the fraction's derivative is ≤ 2/π, so
-//    |Δ| ~1e-4. The tangent-plane line (float Horn normal, asin) adds the same order;
-//    the disc-polygon area in float ~1e-6. 0.02 leaves two decades for drivers' atan,
-//    asin and fused multiply-adds; the rare texel whose max switches between two
-//    nearly equal steps stays within the 1%.
-//  * irradiance relative ≤ 1e-3 on ≥ 99% of lit texels (reference > 0), and
-//    |Δ| ≤ 1e-3·E + 0.02·DNI on all: the sky part π·V·T(n) in float is ~1e-5 relative
-//    (gpu_products_test's shaded bound); the sun part is DNI·max(n·s, 0)·shadow, whose
-//    only loose factor is the shadow fraction above (|Δ| ≤ 0.02·DNI in a penumbra).
-//  * lit shaded ≤ 1 code value on ≥ 99% of texels: codes move only where the linear
-//    value sits within ~1e-3 relative of a rounding boundary, or in a penumbra.
+// Tolerances (float32 GPU vs double CPU): tests/gpu_tolerances.h, derivations there.
 // Runs on Mesa llvmpipe where there is no GPU: W = 8, and ~20 s, most of it the
 // reference's sky×BRDF tables (one per channel, built again by every compute_product).
 #include "gpu_test_util.h"
+#include "gpu_tolerances.h"
 
 #include <gtest/gtest.h>
 
@@ -51,11 +37,7 @@ using shading::ProductBands;
 using shading::ProductOptions;
 using terrain::HeightField;
 
-constexpr double kShadowTol = 0.02;
-constexpr double kShadowMaxAll = 0.25;
-constexpr double kIrradianceRelTol = 1e-3;
-constexpr double kShadedTolCodes = 1.0;
-constexpr double kMinFraction = 0.99;
+using namespace tolerance;  // gpu_tolerances.h
 
 using GpuLightingTest = testing::GpuTest;
 

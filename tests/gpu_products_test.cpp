@@ -3,25 +3,12 @@
 // with the same ProductOptions, for every product (horizon, svf, skyview, shaded), on a
 // synthetic field and on a real DEM crop (shared/dem, skipped if missing).
 //
-// Tolerances (float32 GPU vs double CPU):
-//  * horizon ≤ 0.05°: the GPU samples float B-spline coefficients with float weights
-//    and float positions; heights of ~2 km carry ~1e-4 m of rounding, positions ~1e-5
-//    texel times slopes ≤ ~3, over the shortest lever (t_0 ≈ one texel ≥ 20 m):
-//    ≤ ~1e-5 rad ≈ 6e-4°. The smooth max and atan add rounding of the same order.
-//    Observed max ≈ 1.1e-3° (printed below); 0.05° leaves room for other drivers'
-//    atan and fused multiply-adds.
-//  * svf ≤ 2e-3, skyview ≤ 2e-3: both are means over azimuths of terms whose
-//    derivative in σ is ≤ 1 (svf) or ≤ 1/π·2π/W·W = 2 (skyview), so |Δ| ≤ 2·|Δσ|
-//    ≈ 7e-5 from the horizon bound above; the Horn normal in float (differences
-//    against the centre height) adds ~1e-6. Observed ≤ 1.6e-6.
-//  * shaded ≤ 1 code value on ≥ 99% of texels (and ≤ 2 on all): V·T in float differs
-//    from double by ~1e-5 relative (16 SH coefficients summed from 2W wedge terms),
-//    i.e. ≤ ~0.005 code values, so only texels within that of a rounding boundary of
-//    the 8-bit code move, and by one. Observed: identical codes on every texel.
+// Tolerances (float32 GPU vs double CPU): tests/gpu_tolerances.h, derivations there.
 // Every texel is compared, edges included: both paths snap cardinal headings to exact
 // zeros and count samples within shading::edge_epsilon_texels of the last row/column.
 // Runs on Mesa llvmpipe where there is no GPU.
 #include "gpu_test_util.h"
+#include "gpu_tolerances.h"
 
 #include <gtest/gtest.h>
 
@@ -47,12 +34,7 @@ using shading::ProductBands;
 using shading::ProductOptions;
 using terrain::HeightField;
 
-constexpr double kHorizonTolDeg = 0.05;
-constexpr double kSvfTol = 2e-3;
-constexpr double kSkyviewTol = 2e-3;
-constexpr double kShadedTolCodes = 1.0;
-constexpr double kShadedMinFraction = 0.99;
-constexpr double kShadedMaxCodes = 2.0;
+using namespace tolerance;  // gpu_tolerances.h
 
 using GpuProductsTest = testing::GpuTest;
 
@@ -128,7 +110,7 @@ ProductBands expect_product_matches(const GpuProductPipeline& pipeline, const He
   EXPECT_EQ(s.nan_mismatches, 0);
   EXPECT_GT(s.compared, 0u);
   if (product == Product::Shaded) {
-    EXPECT_GE(s.within, kShadedMinFraction);
+    EXPECT_GE(s.within, kMinFraction);
     EXPECT_LE(s.max_abs, kShadedMaxCodes);
   } else {
     EXPECT_LE(s.max_abs, tol);
@@ -239,7 +221,7 @@ TEST_F(GpuProductsTest, ExactMarchProducts) {
               << 100.0 * s.within << "% of " << s.compared << "\n";
     EXPECT_EQ(s.nan_mismatches, 0);
     if (p == Product::Shaded) {
-      EXPECT_GE(s.within, kShadedMinFraction);
+      EXPECT_GE(s.within, kMinFraction);
       EXPECT_LE(s.max_abs, kShadedMaxCodes);
     } else {
       EXPECT_LE(s.max_abs, tolerance(p));

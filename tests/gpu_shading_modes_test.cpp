@@ -24,6 +24,7 @@
 // this field ‖f̂‖ ≲ 8 (k ≤ 5, ≤ ~3e-5 for HYB); measured 3.5e-6 triple, 9.5e-6 log-brdf.
 // Each mode must differ from the table mode by more than the tolerance somewhere.
 #include "gpu_test_util.h"
+#include "gpu_tolerances.h"
 
 #include <gtest/gtest.h>
 
@@ -48,12 +49,8 @@ using shading::ProductBands;
 using shading::ProductOptions;
 using sh::WedgeInterpolation;
 
-constexpr double kShadedTolCodes = 1.0;
-constexpr double kShadedMaxCodes = 2.0;
-constexpr double kIrradianceRelTol = 1e-3;
+using namespace tolerance;  // gpu_tolerances.h
 constexpr double kSkyRelTol = 1e-4;  // sky-only irradiance, SH modes (argued above)
-constexpr double kShadowTol = 0.02;  // the shadow fraction's bound (gpu_lighting_test)
-constexpr double kMinFraction = 0.99;
 
 using GpuShadingModesTest = testing::GpuTest;
 

@@ -10,6 +10,7 @@
 // the CPU take the same fall-back decisions: both find −∞ by the shared edge rules
 // (shading/horizon_ray.h) and nodata from the same mask.
 #include "gpu_test_util.h"
+#include "gpu_tolerances.h"
 
 #include <gtest/gtest.h>
 
@@ -30,14 +31,7 @@ using shading::ProductBands;
 using shading::ProductOptions;
 using terrain::HeightField;
 
-// As gpu_products_test.cpp / gpu_lighting_test.cpp (derivations there).
-constexpr double kHorizonTolDeg = 0.05;
-constexpr double kSvfTol = 2e-3;
-constexpr double kSkyviewTol = 2e-3;
-constexpr double kShadedTolCodes = 1.0;
-constexpr double kShadedMaxCodes = 2.0;
-constexpr double kIrradianceRelTol = 1e-3;
-constexpr double kMinFraction = 0.99;
+using namespace tolerance;  // gpu_tolerances.h
 
 using GpuSubsampleTest = testing::GpuTest;
 

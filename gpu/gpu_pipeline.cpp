@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -104,14 +103,6 @@ GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
       .set("HEADINGS_BINDING", kHeadings)
       .set("SIGMA_BINDING", kSigma);
   return d;
-}
-
-std::string float_array_literal(const std::vector<double>& v) {
-  std::ostringstream s;
-  s << "float[" << v.size() << "](";
-  for (std::size_t k = 0; k < v.size(); ++k) s << (k ? ", " : "") << glsl_float_literal(v[k]);
-  s << ")";
-  return s.str();
 }
 
 void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
@@ -312,7 +303,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("SH_COEFFS", op.rows())
         .set("NLP_ORDER", s.nlp_order)
         .set("NLP_V0_SCALE", sh::nlp_norm(0))
-        .set_literal("NLP_OCCLUSION_FACTORS", float_array_literal(occlusion_factors))
+        .set_literal("NLP_OCCLUSION_FACTORS", glsl_float_array_literal(occlusion_factors))
         .set("WEDGE_ROWS", op.rows())
         .set("WEDGE_COLS", op.cols())
         .set("WEDGE_TAPS", op.taps())

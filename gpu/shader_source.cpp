@@ -93,6 +93,12 @@ std::string glsl_float_literal(double value) {
   return s;
 }
 
+std::string glsl_float_array_literal(std::span<const double> values) {
+  std::string s = "float[" + std::to_string(values.size()) + "](";
+  for (std::size_t k = 0; k < values.size(); ++k) s += (k ? ", " : "") + glsl_float_literal(values[k]);
+  return s + ")";
+}
+
 GlslDefines& GlslDefines::set(std::string_view name, int value) {
   return set_literal(name, std::to_string(value));
 }

@@ -6,6 +6,7 @@
 // one method that works on every driver.)
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -31,6 +32,8 @@ class GlslDefines {
 
 // Float literal for GLSL (always with '.' or exponent, 9 significant digits).
 std::string glsl_float_literal(double value);
+// GLSL array constructor of those literals: "float[n](a, b, …)".
+std::string glsl_float_array_literal(std::span<const double> values);
 
 struct AssembledShader {
   std::string text;  // ready for glShaderSource

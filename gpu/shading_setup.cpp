@@ -11,21 +11,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
 namespace skylit::gpu {
 namespace {
 
 using shading::ShadingMode;
-
-std::string float_array(const std::vector<double>& v) {
-  std::ostringstream s;
-  s << "float[" << v.size() << "](";
-  for (std::size_t k = 0; k < v.size(); ++k) s << (k ? ", " : "") << glsl_float_literal(v[k]);
-  s << ")";
-  return s.str();
-}
 
 // sh_norm(l, |m|) per coefficient, √2 folded in for m ≠ 0 (sh::eval_basis).
 std::vector<double> basis_norm(int order) {
@@ -91,7 +82,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
       .set("MODE_TRIPLE", static_cast<int>(ShadingMode::TripleProduct))
       .set("MODE_LOG_BRDF", static_cast<int>(ShadingMode::LogBrdf))
       .set("SHADING_MODE", static_cast<int>(mode))
-      .set_literal("SH_BASIS_NORM", float_array(basis_norm(s.sh_order)))
+      .set_literal("SH_BASIS_NORM", glsl_float_array_literal(basis_norm(s.sh_order)))
       .set("TABLE_BINDING", table_binding);
   if (lit) d.set("CHANNELS", out.channels).set("HAS_SKY", skies.empty() ? 0 : 1);
 
@@ -119,7 +110,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
         .set("GAMMA_BINDING", gamma_binding)
         .set("GAMMA_ENTRIES", static_cast<int>(out.gamma.size() / 2))
         .set("SQRT_4PI", sh::kSqrt4Pi)
-        .set_literal("LOBE_ZH_ROTATED", float_array(rotated_zh_factors(zh)));
+        .set_literal("LOBE_ZH_ROTATED", glsl_float_array_literal(rotated_zh_factors(zh)));
     if (mode == ShadingMode::LogBrdf) {
       d.set("LOG_EPS", std::log(sh::kDefaultLogEpsilon));
       set_hyb_defines(settings.log_hyb, d);

@@ -54,18 +54,8 @@ constexpr double kSkyRelTol = 1e-4;  // sky-only irradiance, SH modes (argued ab
 
 using GpuShadingModesTest = testing::GpuTest;
 
-terrain::HeightField small_field() {
-  terrain::SyntheticOptions o;
-  o.width = 48;
-  o.height = 40;
-  o.spacing = 30.0;
-  o.seed = 3;
-  o.feature_size = 1500.0;
-  o.relief = 1200.0;
-  terrain::HeightField f = terrain::make_synthetic_terrain(o);
-  f.valid[static_cast<std::size_t>(20) * f.width + 24] = 0;
-  return f;
-}
+// 48 × 40 (W = 8 keeps the SH modes' reference runs short), nodata at (24, 20).
+terrain::HeightField small_field() { return testing::synthetic_field({48, 40, 3, 1500.0, 1200.0, 24, 20}); }
 
 ProductOptions options(WedgeInterpolation wedge, bool lit) {
   ProductOptions o;

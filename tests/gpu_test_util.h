@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <memory>
@@ -29,18 +30,25 @@ class GpuTest : public ::testing::Test {
   std::unique_ptr<HeadlessContext> context;
 };
 
-// Seeded synthetic mountains (ridges and a valley) on a non-square grid, with a
-// nodata texel.
-inline terrain::HeightField synthetic_field() {
+// Seeded synthetic mountains (ridges and a valley) on a non-square grid, with one
+// nodata texel; the default is the fields most GPU tests compare on.
+struct SyntheticFieldSpec {
+  int width = 100, height = 88;
+  std::uint64_t seed = 7;
+  double feature_size = 2500.0, relief = 1400.0;  // m
+  int nodata_i = 50, nodata_j = 40;
+};
+
+inline terrain::HeightField synthetic_field(const SyntheticFieldSpec& spec = {}) {
   terrain::SyntheticOptions o;
-  o.width = 100;
-  o.height = 88;
+  o.width = spec.width;
+  o.height = spec.height;
   o.spacing = 30.0;
-  o.seed = 7;
-  o.feature_size = 2500.0;
-  o.relief = 1400.0;
+  o.seed = spec.seed;
+  o.feature_size = spec.feature_size;
+  o.relief = spec.relief;
   terrain::HeightField f = terrain::make_synthetic_terrain(o);
-  f.valid[static_cast<std::size_t>(40) * f.width + 50] = 0;
+  f.valid[static_cast<std::size_t>(spec.nodata_j) * f.width + spec.nodata_i] = 0;
   return f;
 }
 

@@ -2,7 +2,7 @@
 
 #include "shading/sh_basis.h"
 
-#include <OpenImageIO/imageio.h>
+#include "imageio/image_reader.h"
 
 #include <glm/common.hpp>
 
@@ -32,21 +32,19 @@ EnvMapSky::EnvMapSky(int width, int height, std::vector<float> rgb, const EnvMap
 }
 
 EnvMapSky EnvMapSky::load(const std::string& path, const EnvMapOptions& opt) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw std::runtime_error("cannot read environment map '" + path + "': " + OIIO::geterror());
-  const OIIO::ImageSpec spec = in->spec();
-  const int w = spec.width, h = spec.height, nch = spec.nchannels;
+  imageio::FloatImage image;
+  try {
+    image = imageio::read_float_image(path, 3);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("environment map: ") + e.what());
+  }
+  const int w = image.width, h = image.height, n = image.channels;
   if (h < 1 || w != 2 * h)
     throw std::invalid_argument("environment map '" + path + "' is " + std::to_string(w) + " × " +
                                 std::to_string(h) + "; an equirectangular map needs width = 2 × height");
-  const int nread = std::min(nch, 3);
-  std::vector<float> px(static_cast<std::size_t>(w) * h * nread);
-  if (!in->read_image(0, 0, 0, nread, OIIO::TypeDesc::FLOAT, px.data()))
-    throw std::runtime_error("cannot read pixels of environment map '" + path + "': " + in->geterror());
-  in->close();
   std::vector<float> rgb(static_cast<std::size_t>(w) * h * 3);
   for (std::size_t p = 0; p < static_cast<std::size_t>(w) * h; ++p)
-    for (int k = 0; k < 3; ++k) rgb[3 * p + k] = px[nread * p + std::min(k, nread - 1)];
+    for (int k = 0; k < 3; ++k) rgb[3 * p + k] = image.pixels[n * p + std::min(k, n - 1)];
   return EnvMapSky(w, h, std::move(rgb), opt);
 }
 

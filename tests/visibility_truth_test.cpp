@@ -12,18 +12,18 @@ constexpr double kPi = sh::kPi;
 
 TEST(VisibilityTruth, EmptySceneIntegratesTheSphere) {
   truth::Occluders none;
-  EXPECT_NEAR(truth::integrate(none, [](const glm::dvec3&) { return 1.0; }, {256, 8}), 4 * kPi, 1e-12);
+  EXPECT_NEAR(truth::integrate(none, [](const glm::dvec3&) { return 1.0; }, {256, 8, {}}), 4 * kPi, 1e-12);
 }
 
 TEST(VisibilityTruth, CapSolidAngleAndZhMatchClosedForm) {
   for (double alpha : {0.1, 0.5236, 1.1198, 2.0}) {
     const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
     truth::Occluders occ{{}, {{axis, alpha}}};
-    const double vis = truth::integrate(occ, [](const glm::dvec3&) { return 1.0; }, {4096, 16});
+    const double vis = truth::integrate(occ, [](const glm::dvec3&) { return 1.0; }, {4096, 16, {}});
     EXPECT_NEAR(vis, 4 * kPi - 2 * kPi * (1 - std::cos(alpha)), 2e-6) << alpha;
     // A cap about +z: its visibility projects onto ZH; compare with the closed form.
     truth::Occluders zc{{}, {{{0, 0, 1}, alpha}}};
-    const auto v = truth::project_visibility(4, zc, {64, 16});
+    const auto v = truth::project_visibility(4, zc, {64, 16, {}});
     const double c = std::cos(alpha);
     const double z0 = std::sqrt(kPi) * (1 - c);
     EXPECT_NEAR(v[0], sh::kSqrt4Pi - z0, 1e-12);

@@ -3,6 +3,7 @@
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
 
+#include <chrono>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -17,6 +18,10 @@ std::string one_line(std::string text) {
   return text;
 }
 
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::unique_ptr<gpu::HeadlessContext> try_context(std::string* why) {
   try {
     return std::make_unique<gpu::HeadlessContext>();
@@ -28,10 +33,16 @@ std::unique_ptr<gpu::HeadlessContext> try_context(std::string* why) {
 
 shading::ProductBands run_gpu(const gpu::HeadlessContext& context, const terrain::HeightField& field,
                               shading::Product product, const shading::ProductOptions& options,
-                              const shading::ProgressCallback& progress) {
+                              const shading::ProgressCallback& progress, BackendReport& report) {
   context.make_current();
+  const auto compile_start = std::chrono::steady_clock::now();
   const gpu::GpuProductPipeline pipeline(product, options);  // destroyed while current
-  return pipeline.compute(field, progress);
+  report.compile_ms = ms_since(compile_start);
+  const auto compute_start = std::chrono::steady_clock::now();
+  auto bands = pipeline.compute(field, progress, &report.gpu);
+  report.compute_ms = ms_since(compute_start);
+  report.on_gpu = true;
+  return bands;
 }
 
 }  // namespace
@@ -42,13 +53,17 @@ std::string default_backend() { return backend_names().front(); }
 
 shading::ProductBands compute_with_backend(const std::string& backend, const terrain::HeightField& field,
                                            shading::Product product, const shading::ProductOptions& options,
-                                           const shading::ProgressCallback& progress, std::string* used) {
-  auto note = [used](const std::string& what) {
-    if (used) *used = what;
-  };
+                                           const shading::ProgressCallback& progress, BackendReport* report) {
+  BackendReport local;
+  BackendReport& r = report ? *report : local;
+  r = {};
   const auto reference = [&](const std::string& why) {
-    note("reference (CPU" + (why.empty() ? std::string() : "; " + why) + ")");
-    return shading::compute_product(field, product, options, progress);
+    r.used = "reference (CPU" + (why.empty() ? std::string() : "; " + why) + ")";
+    r.on_gpu = false;
+    const auto start = std::chrono::steady_clock::now();
+    auto bands = shading::compute_product(field, product, options, progress);
+    r.compute_ms = ms_since(start);
+    return bands;
   };
   if (backend == "reference") return reference("");
   if ((backend == "gpu" || backend == "auto") && !gpu::gpu_supports(product, options)) {
@@ -61,15 +76,17 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
   }
   if (backend == "gpu" || backend == "auto") {
     std::string why;
+    const auto context_start = std::chrono::steady_clock::now();
     const auto context = try_context(&why);
+    r.context_ms = ms_since(context_start);
     if (!context) {
       if (backend == "gpu") throw std::runtime_error("--backend gpu: " + why);
       return reference("no OpenGL 4.5 context");  // auto: no GL 4.5 here
     }
-    note("gpu (" + context->renderer() + ", " + context->platform() + ")");
-    if (backend == "gpu") return run_gpu(*context, field, product, options, progress);
+    r.used = "gpu (" + context->renderer() + ", " + context->platform() + ")";
+    if (backend == "gpu") return run_gpu(*context, field, product, options, progress, r);
     try {
-      return run_gpu(*context, field, product, options, progress);
+      return run_gpu(*context, field, product, options, progress, r);
     } catch (const std::runtime_error& e) {  // e.g. a field over the GPU's buffer limits
       std::cerr << "skylit: note: the gpu backend failed (" << one_line(e.what())
                 << "); computing with the reference backend\n";

@@ -14,6 +14,8 @@
 #include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -45,6 +47,7 @@ struct ShadeArgs {
   bool quiet = false;
   bool overwrite = false;
   bool compute_edges = true;
+  bool timings = false;
   shading::LightingRequest lighting;
   bool no_sun = false;
 };
@@ -61,6 +64,28 @@ std::optional<sun::Observer> dem_place(const terrain::HeightField& f) {
   const auto at = terrain::grid_centre_lat_lon(f.georef, f.width, f.height);
   if (!at) return std::nullopt;
   return sun::Observer{at->latitude_deg, at->longitude_deg, f.at(f.width / 2, f.height / 2)};
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
+// from the pipeline (gpu/gpu_pipeline.h GpuPipelineTimings says which clock each uses).
+void print_timings(double read_ms, const BackendReport& r, double write_ms) {
+  auto line = [](const char* stage, double ms) { std::fprintf(stderr, "skylit: time %-28s %9.1f ms\n", stage, ms); };
+  line("read DEM", read_ms);
+  if (r.on_gpu) {
+    line("OpenGL context", r.context_ms);
+    line("compile kernels", r.compile_ms);
+    line("upload heights", r.gpu.upload_ms);
+    line("pyramid build", r.gpu.pyramid_ms);
+    line("sun shadow (GPU timer)", r.gpu.sun_ms);
+    line("march (GPU timer)", r.gpu.march_ms);
+    line("surface products (GPU timer)", r.gpu.products_ms);
+  }
+  line(r.on_gpu ? "compute (all GPU stages)" : "compute (CPU reference)", r.compute_ms);
+  line("write output", write_ms);
 }
 
 terrain::HeightField load_input(const ShadeArgs& a) {
@@ -94,7 +119,9 @@ int run_shade(const ShadeArgs& a) {
   if (lit) shading::validate(request);  // before reading the DEM
   shading::validate_subsample(a.options);  // --subsample with --exact
 
+  const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);
+  const double read_ms = ms_since(read_start);
 
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
@@ -106,11 +133,13 @@ int run_shade(const ShadeArgs& a) {
   }
 
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  std::string used;
-  const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); }, &used);
+  BackendReport report;
+  const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); }, &report);
   bar.finish();
-  if (!a.quiet) std::cerr << "skylit: computed on " << used << "\n";
+  if (!a.quiet) std::cerr << "skylit: computed on " << report.used << "\n";
+  const auto write_start = std::chrono::steady_clock::now();
   write_product(out, field, bands);
+  if (a.timings) print_timings(read_ms, report, ms_since(write_start));
   if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
                           << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";
   return 0;
@@ -188,6 +217,7 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
+  cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
   cmd->callback([&run, args, cmd] {
     // The preset sets the quality knobs the user did not give explicitly.

@@ -84,12 +84,7 @@ TEST(CliLighting, BadLightingFailsCleanlyBeforeAnyWork) {
 
 TEST(CliLighting, NoCrsWorksWithLatLonAndMapSkiesLoad) {
   ScratchDir dir;
-  RasterSpec s;
-  s.width = s.height = 8;
-  s.values = ramp(8, 8, 10, 1, 2);
-  s.epsg.reset();
-  s.set_geotransform = false;
-  const std::string in = make_raster(dir.file("nocrs.tif"), s);
+  const std::string in = make_crs_less_ramp(dir.file("nocrs.tif"));
   const auto r = run_skylit("shade " + in + " -s 10 -o " + dir.file("e.tif") +
                                 " -p irradiance --azimuths 4 -q --time 2026-06-21T12:00:00+02:00 --lat 46 --lon 8",
                             true);

@@ -159,12 +159,7 @@ TEST(CliShade, BadInputFailsCleanly) {
 
 TEST(CliShade, UnknownCrsWorksOnlyWithAScale) {
   ScratchDir dir;
-  RasterSpec s;
-  s.width = s.height = 8;
-  s.values = ramp(8, 8, 10, 1, 2);
-  s.epsg.reset();
-  s.set_geotransform = false;
-  const std::string in = make_raster(dir.file("nocrs.tif"), s);
+  const std::string in = make_crs_less_ramp(dir.file("nocrs.tif"));
   const auto r = run_skylit("shade " + in + " -s 10 -o " + dir.file("svf.tif") + " -p svf --azimuths 4", true);
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;

@@ -102,6 +102,16 @@ inline std::vector<double> ramp(int w, int h, double a, double bx, double by) {
   return v;
 }
 
+// An 8 × 8 ramp with neither CRS nor geotransform (needs -s / --lat/--lon to be used).
+inline std::string make_crs_less_ramp(const std::string& path) {
+  RasterSpec s;
+  s.width = s.height = 8;
+  s.values = ramp(8, 8, 10, 1, 2);
+  s.epsg.reset();
+  s.set_geotransform = false;
+  return make_raster(path, s);
+}
+
 inline std::string shared_dem(const std::string& name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }
 
 }  // namespace skylit::terrain::testing

@@ -40,9 +40,7 @@ GlslDefines horizon_defines(const GpuHorizonOptions& o) {
       .set("LOCAL_SIZE_Y", kLocalSize)
       .set("AZIMUTHS", o.azimuths)
       .set("STEP_TEXELS", o.march.step_texels)
-      // drop(t) = t²/(2 R_eff): the constants come from shading::EarthCurvature.
-      .set("INV_TWO_R_EFF",
-           o.march.curvature.enabled ? 1.0 / (2.0 * o.march.curvature.effective_radius()) : 0.0)
+      .set("INV_TWO_R_EFF", o.march.curvature.drop_per_square_metre())
       .set("HEIGHTS_BINDING", kHeights)
       .set("ROW_DX_BINDING", kRowDx)
       .set("HEADINGS_BINDING", kHeadings)

@@ -12,8 +12,10 @@ struct EarthCurvature {
   double refraction_k = 0.13;
 
   double effective_radius() const { return radius_m / (1.0 - refraction_k); }
+  // drop(d) = d² times this: 1/(2·R_eff) (1/m), 0 when disabled; the GPU kernels get it.
+  double drop_per_square_metre() const { return enabled ? 1.0 / (2.0 * effective_radius()) : 0.0; }
   // Height drop (m) at ground distance d (m); 0 when disabled.
-  double drop(double d) const { return enabled ? d * d / (2.0 * effective_radius()) : 0.0; }
+  double drop(double d) const { return d * d * drop_per_square_metre(); }
 };
 
 }  // namespace skylit::shading

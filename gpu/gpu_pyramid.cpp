@@ -127,13 +127,16 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
   glCopyNamedBufferSubData(heights.id(), mCoeffs.id(), 0, 0,
                            static_cast<GLsizeiptr>(static_cast<std::size_t>(width) * height * sizeof(float)));
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  // The filter reads through buffer textures (pyramid_filter.comp says why).
+  const BufferTexture heights_tex(heights), scratch_tex(mScratch), weights_tex(mWeights);
+  weights_tex.bind_sampler(kWeights);
   for (int l = 0; l < levels(); ++l) {
     const terrain::LevelShape& s = mShapes[l];
     const LevelTables& t = mTables[l];
     const int offset = static_cast<int>(mOffsets[l]);
     if (l > 0) {
       // x pass: every level-0 row → s.width values, into the scratch buffer.
-      heights.bind_storage(kSrc);
+      heights_tex.bind_sampler(kSrc);
       mScratch.bind_storage(kDst);
       mFilter.set_uniform("axis", 0);
       mFilter.set_uniform("out_width", s.width);
@@ -145,7 +148,7 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       mFilter.set_uniform("tap_base", t.taps_x);
       mFilter.dispatch_covering(s.width, height);
       // y pass: the scratch's columns → the level's samples, in its coefficients' slot.
-      mScratch.bind_storage(kSrc);
+      scratch_tex.bind_sampler(kSrc);
       mCoeffs.bind_storage(kDst);
       mFilter.set_uniform("axis", 1);
       mFilter.set_uniform("out_height", s.height);

@@ -15,11 +15,15 @@
 // TAPS_BINDING, WEIGHTS_BINDING.
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 1) in;
 
-layout(std430, binding = SRC_BINDING) readonly buffer Src { float src[]; };
+// Inputs and weights are r32f buffer textures (texture units = the bindings): on Mesa
+// llvmpipe a texelFetch is a vector gather, an SSBO load a scalar loop over the lanes.
+layout(binding = SRC_BINDING) uniform samplerBuffer src_tex;
+layout(binding = WEIGHTS_BINDING) uniform samplerBuffer weights_tex;
 layout(std430, binding = DST_BINDING) writeonly buffer Dst { float dst[]; };
 // Per output index along the axis: (first input, tap count, offset of its weights, 0).
 layout(std430, binding = TAPS_BINDING) readonly buffer Taps { ivec4 taps[]; };
-layout(std430, binding = WEIGHTS_BINDING) readonly buffer Weights { float weights[]; };
+float src(int index) { return texelFetch(src_tex, index).r; }
+float weight(int index) { return texelFetch(weights_tex, index).r; }
 
 uniform int axis;           // 0: filter along x, 1: along y
 uniform int out_width;      // output grid (row-major at dst_offset)
@@ -36,14 +40,14 @@ void main() {
   int along = axis == 0 ? i : j, across = axis == 0 ? j : i;
   ivec4 t = taps[tap_base + along];
   int base = across * across_stride;
-  float centre = src[base + clamp(t.x + t.y / 2, 0, n_in - 1) * along_stride];
+  float centre = src(base + clamp(t.x + t.y / 2, 0, n_in - 1) * along_stride);
   float acc = 0.0;
   if (t.x >= 0 && t.x + t.y <= n_in) {  // interior: no clamping (most outputs)
     int at = base + t.x * along_stride;
-    for (int q = 0; q < t.y; ++q, at += along_stride) acc += weights[t.z + q] * (src[at] - centre);
+    for (int q = 0; q < t.y; ++q, at += along_stride) acc += weight(t.z + q) * (src(at) - centre);
   } else {
     for (int q = 0; q < t.y; ++q)
-      acc += weights[t.z + q] * (src[base + clamp(t.x + q, 0, n_in - 1) * along_stride] - centre);
+      acc += weight(t.z + q) * (src(base + clamp(t.x + q, 0, n_in - 1) * along_stride) - centre);
   }
   dst[dst_offset + j * out_width + i] = centre + acc;
 }

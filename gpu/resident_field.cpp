@@ -1,17 +1,12 @@
 #include "gpu/resident_field.h"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 
 #include "gpu/gpu_products.h"
 
 namespace skylit::gpu {
 namespace {
-
-constexpr int kLatticeSide = 32;  // probes per side of the identity guard
-
-bool inside(const terrain::PixelRect& r, int i, int j) { return i >= r.x0 && i < r.x1() && j >= r.y0 && j < r.y1(); }
 
 // Words [word0, word1) of the packed valid mask (pack_valid_bytes' layout: 1 byte per
 // texel, four per word, little end first).
@@ -30,10 +25,9 @@ std::size_t ResidentField::sync(const terrain::HeightField& field) {
       field.valid.size() != texels || static_cast<int>(field.dx_per_row.size()) != field.height)
     throw std::invalid_argument("GPU pipeline: malformed height field");
   const terrain::PixelRect& dirty = field.last_dirty;
-  const bool edited = &field == mSource && field.width == mWidth && field.height == mHeight && field.dy == mDy &&
+  const bool edited = field.id.value() == mSourceId && field.width == mWidth && field.height == mHeight && field.dy == mDy &&
                       field.dx_per_row == mDx && field.revision == mRevision + 1 && !dirty.empty() &&
-                      dirty.x0 >= 0 && dirty.y0 >= 0 && dirty.x1() <= field.width && dirty.y1() <= field.height &&
-                      lattice_matches(field, dirty);
+                      dirty.x0 >= 0 && dirty.y0 >= 0 && dirty.x1() <= field.width && dirty.y1() <= field.height;
   if (!edited) return upload_whole(field);
   // Rows y0 … y1 − 1: contiguous in the heights, and in the valid words that hold them.
   const std::size_t w = static_cast<std::size_t>(field.width);
@@ -43,7 +37,6 @@ std::size_t ResidentField::sync(const terrain::HeightField& field) {
   const std::vector<std::uint32_t> words = valid_words(field, word0, word1);
   mValid.upload(words.data(), words.size() * sizeof(std::uint32_t), word0 * sizeof(std::uint32_t));
   mRevision = field.revision;
-  record_lattice(field);
   return count * sizeof(float) + words.size() * sizeof(std::uint32_t);
 }
 
@@ -60,33 +53,13 @@ std::size_t ResidentField::upload_whole(const terrain::HeightField& field) {
     mValid = Buffer::from(std::span<const std::uint32_t>(valid));
     mRowDx = Buffer::from(std::span<const float>(row_dx));
   }
-  mSource = &field;
+  mSourceId = field.id.value();
   mWidth = field.width;
   mHeight = field.height;
   mDy = field.dy;
   mDx = field.dx_per_row;
   mRevision = field.revision;
-  record_lattice(field);
   return mHeights.size_bytes() + mValid.size_bytes() + mRowDx.size_bytes();
-}
-
-bool ResidentField::lattice_matches(const terrain::HeightField& field, const terrain::PixelRect& except) const {
-  for (const Probe& p : mLattice) {
-    if (inside(except, p.i, p.j)) continue;
-    const float h = field.at(p.i, p.j);
-    if (std::memcmp(&h, &p.height, sizeof h) != 0 || (field.is_valid(p.i, p.j) ? 1 : 0) != p.valid) return false;
-  }
-  return true;
-}
-
-void ResidentField::record_lattice(const terrain::HeightField& field) {
-  mLattice.clear();
-  const int nx = std::min(kLatticeSide, field.width), ny = std::min(kLatticeSide, field.height);
-  for (int b = 0; b < ny; ++b)
-    for (int a = 0; a < nx; ++a) {
-      const int i = static_cast<int>((a + 0.5) * field.width / nx), j = static_cast<int>((b + 0.5) * field.height / ny);
-      mLattice.push_back({i, j, field.at(i, j), static_cast<std::uint8_t>(field.is_valid(i, j) ? 1 : 0)});
-    }
 }
 
 std::size_t ResidentTable::assign(std::span<const float> values) {

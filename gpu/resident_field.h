@@ -2,14 +2,12 @@
 // DESIGN.md): heights, valid mask and row spacing stay resident, and an edited field
 // re-uploads only the rows its edit touched.
 //
-// Which field is "the same": the one at the same address, of the same size and
-// spacing, whose revision is exactly one past the resident copy's (one mark_dirty()
-// since, terrain/height_field.h), with its last_dirty rectangle inside the grid, and
-// whose texels on a 32 × 32 lattice outside that rectangle still hold the resident
-// values (a guard against another field reusing the address). Then rows
-// last_dirty.y0 … y1 − 1 of the heights and the valid-mask words holding them are
-// uploaded; anything else (another field, several edits since, an unknown change)
-// is uploaded whole.
+// Which field is "the same": the same object (HeightField::id, never reused, unlike an
+// address), of the same size and spacing, whose revision is exactly one past the
+// resident copy's (one mark_dirty() since, terrain/height_field.h) with its last_dirty
+// rectangle inside the grid. Then rows last_dirty.y0 … y1 − 1 of the heights and the
+// valid-mask words holding them are uploaded; anything else (another field, several
+// edits since) is uploaded whole.
 #pragma once
 
 #include <cstddef>
@@ -34,21 +32,12 @@ class ResidentField {
 
  private:
   std::size_t upload_whole(const terrain::HeightField& field);
-  bool lattice_matches(const terrain::HeightField& field, const terrain::PixelRect& except) const;
-  void record_lattice(const terrain::HeightField& field);
-
   Buffer mHeights, mValid, mRowDx;
-  const terrain::HeightField* mSource = nullptr;  // identity only; never dereferenced
+  std::uint64_t mSourceId = 0;  // HeightField::id of the resident copy (0: none)
   int mWidth = 0, mHeight = 0;
   double mDy = 0.0;
   std::vector<double> mDx;
   std::uint64_t mRevision = 0;
-  struct Probe {
-    int i, j;
-    float height;
-    std::uint8_t valid;
-  };
-  std::vector<Probe> mLattice;
 };
 
 // A small table kept on the GPU, re-uploaded only when its contents change.

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "terrain/object_id.h"
+
 namespace skylit::terrain {
 
 struct GeoReference {
@@ -53,6 +55,8 @@ struct HeightField {
   // rectangle of the most recent change (whole grid after construction/reads).
   std::uint64_t revision = 0;
   PixelRect last_dirty;
+  // Which object this is (copies get a new id): GPU copies recognise their field by it.
+  ObjectId id;
 
   HeightField() = default;
   HeightField(int w, int h, double spacing);  // flat, all valid, square spacing

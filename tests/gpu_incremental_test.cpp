@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "gpu/gpu_pipeline.h"
@@ -128,6 +129,25 @@ TEST_F(GpuIncrementalTest, UnknownChangesAreUploadedWhole) {
   raise(h, {0, 0, 2, 2});
   pipeline.compute(h, {}, &t);
   EXPECT_EQ(t.uploaded_bytes, whole_bytes(h));
+}
+
+// A new field built where an old one lived (same address, as allocators reuse it),
+// one revision on and edited inside a rectangle: only its id tells it apart.
+TEST_F(GpuIncrementalTest, ANewFieldAtAReusedAddressIsUploadedWhole) {
+  const shading::ProductOptions options;
+  const GpuProductPipeline pipeline(Product::Svf, options);
+  std::optional<HeightField> slot(testing::synthetic_field());
+  const HeightField* address = &*slot;
+  pipeline.compute(*slot);
+  const std::uint64_t revision = slot->revision;
+  slot.emplace(testing::synthetic_field({.seed = 11}));
+  ASSERT_EQ(&*slot, address);
+  slot->revision = revision;
+  raise(*slot, {10, 10, 4, 4});  // revision + 1, a small dirty rectangle
+  GpuPipelineTimings t;
+  const ProductBands got = pipeline.compute(*slot, {}, &t);
+  EXPECT_EQ(t.uploaded_bytes, whole_bytes(*slot));
+  EXPECT_TRUE(bit_identical(got, GpuProductPipeline(Product::Svf, options).compute(*slot)));
 }
 
 }  // namespace

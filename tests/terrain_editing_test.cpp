@@ -18,6 +18,23 @@ HeightField numbered(int w, int h) {
   return f;
 }
 
+// Identity for GPU residency: never shared by two live fields, kept across a move.
+TEST(TerrainEditing, FieldIdsAreUniqueCopiesAreNewMovesKeepTheirs) {
+  HeightField a(4, 3, 10.0), b(4, 3, 10.0);
+  EXPECT_NE(a.id.value(), b.id.value());
+  const HeightField copy = a;
+  EXPECT_NE(copy.id.value(), a.id.value());
+  const std::uint64_t a_id = a.id.value();
+  HeightField moved = std::move(a);
+  EXPECT_EQ(moved.id.value(), a_id);
+  EXPECT_NE(a.id.value(), a_id);  // the moved-from object is another field now
+  b = moved;                      // b now holds moved's data but stays its own object
+  EXPECT_NE(b.id.value(), moved.id.value());
+  b = std::move(moved);
+  EXPECT_EQ(b.id.value(), a_id);
+  EXPECT_NE(moved.id.value(), a_id);
+}
+
 TEST(TerrainEditing, ReplaceHeightsTracksRevision) {
   HeightField f = numbered(8, 6);
   f.valid[2 * 8 + 3] = 0;

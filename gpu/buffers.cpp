@@ -22,6 +22,15 @@ GLenum pixel_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_RED 
 
 }  // namespace
 
+void check_storage_size(std::size_t bytes, const char* what) {
+  GLint64 max_block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  if (bytes > static_cast<std::size_t>(max_block))
+    throw std::runtime_error(std::string(what) + " needs " + std::to_string(bytes) +
+                             " bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE " + std::to_string(max_block) +
+                             "; split the field into tiles");
+}
+
 Buffer::Buffer(std::size_t size_bytes, const void* data) : mSize(size_bytes) {
   glCreateBuffers(1, &mId);
   // GL forbids zero-sized storage; one byte keeps an "empty" buffer bindable.

@@ -9,6 +9,10 @@
 
 namespace skylit::gpu {
 
+// Throws std::runtime_error("<what> needs … bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE …")
+// where one storage block would exceed the driver's limit (needs a current context).
+void check_storage_size(std::size_t bytes, const char* what);
+
 // A buffer object usable as SSBO or UBO; contents can be rewritten and read back.
 class Buffer {
  public:

@@ -20,7 +20,6 @@
 #include "gpu/buffers.h"
 #include "gpu/compute_program.h"
 #include "gpu/gl_context.h"
-#include "gpu/gpu_products.h"
 #include "gpu/gpu_pyramid.h"
 #include "gpu/resident_field.h"
 #include "gpu/shading_setup.h"
@@ -81,15 +80,11 @@ std::vector<float> band_headings(Product product, int w) {
   for (int k = 0; k < w; ++k) {
     const shading::Heading u = needs_visibility(product)
                                    ? shading::heading_from_math(shading::kTwoPi * k / w)
-                                   : band_heading(k, w);
+                                   : shading::heading_from_geographic(shading::band_azimuth(k, w));
     out.push_back(static_cast<float>(u.east));
     out.push_back(static_cast<float>(u.north));
   }
   return out;
-}
-
-double inv_two_r_eff(const shading::EarthCurvature& c) {
-  return c.enabled ? 1.0 / (2.0 * c.effective_radius()) : 0.0;
 }
 
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
@@ -97,7 +92,7 @@ GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
   d.set("LOCAL_SIZE_X", kLocalSize)
       .set("LOCAL_SIZE_Y", kLocalSize)
       .set("AZIMUTHS", azimuths)
-      .set("INV_TWO_R_EFF", inv_two_r_eff(o.march.curvature))
+      .set("INV_TWO_R_EFF", o.march.curvature.drop_per_square_metre())
       .set("HEIGHTS_BINDING", kHeights)
       .set("ROW_DX_BINDING", kRowDx)
       .set("HEADINGS_BINDING", kHeadings)
@@ -215,7 +210,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("LOCAL_SIZE_Y", kLocalSize)
         .set("PI", std::numbers::pi)
         .set("HALF_PI", std::numbers::pi / 2)
-        .set("INV_TWO_R_EFF", inv_two_r_eff(options.march.curvature))
+        .set("INV_TWO_R_EFF", options.march.curvature.drop_per_square_metre())
         .set("HEIGHTS_BINDING", kHeights)
         .set("ROW_DX_BINDING", kRowDx)
         .set("VALID_BINDING", kValid)
@@ -456,7 +451,9 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   set_grid_uniforms(products, field);
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));
 
-  if (mOptions.exact) {  // D with a float-rounding slack, as GpuExactHorizon sets it
+  if (mOptions.exact) {
+    // The CPU stops at t > D·(1 + 1e−12); float t carries ~1e−7 relative error, so the
+    // slack is widened to keep the sample at t = D that the CPU keeps.
     const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
                                                              : shading::dem_extent(field);
     march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
@@ -511,7 +508,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // Stage 4: the output transfer.
   throw_on_gl_error("GpuProductPipeline::compute");
   if (mProduct == Product::Horizon)
-    for (int b = 0; b < bands; ++b) out.band_names.push_back(horizon_band_name(b, bands));
+    for (int b = 0; b < bands; ++b) out.band_names.push_back(shading::horizon_band_name(b, bands));
   else
     out.band_names.emplace_back(shading::product_name(mProduct));
   const bool lit = shading::uses_lighting(mProduct, mOptions);

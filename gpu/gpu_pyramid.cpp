@@ -10,7 +10,7 @@
 #include <string>
 
 #include "gpu/gl_context.h"
-#include "gpu/gpu_products.h"
+#include "gpu/buffers.h"
 
 namespace skylit::gpu {
 namespace {

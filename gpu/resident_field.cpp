@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "gpu/gpu_products.h"
+#include "gpu/buffers.h"
 
 namespace skylit::gpu {
 namespace {
 
-// Words [word0, word1) of the packed valid mask (pack_valid_bytes' layout: 1 byte per
+// Words [word0, word1) of the packed valid mask (the shaders' valid_bytes: 1 byte per
 // texel, four per word, little end first).
 std::vector<std::uint32_t> valid_words(const terrain::HeightField& field, std::size_t word0, std::size_t word1) {
   std::vector<std::uint32_t> words(word1 - word0, 0u);

@@ -27,7 +27,7 @@ class ResidentField {
   std::size_t sync(const terrain::HeightField& field);
 
   const Buffer& heights() const { return mHeights; }  // float32, row-major
-  const Buffer& valid() const { return mValid; }      // 1 B/texel, 4 per word (pack_valid_bytes)
+  const Buffer& valid() const { return mValid; }      // 1 B/texel, 4 per word, little end first
   const Buffer& row_dx() const { return mRowDx; }     // float32 per row
 
  private:

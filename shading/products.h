@@ -53,6 +53,8 @@ std::string_view product_name(Product p);
 std::optional<Product> parse_product(std::string_view name);
 // The names above joined by ", " (for messages).
 std::string product_names();
+// Name of band k of W of the horizon product, e.g. "horizon_az045.0".
+std::string horizon_band_name(int k, int azimuths);
 
 struct ExactOptions {
   int sky_azimuths = 360;       // svf/skyview ground truth: azimuths of the sky integral

@@ -80,12 +80,6 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // Share of the progress bar for the sun's pass in lit products (1 ray vs W).
 constexpr double kSunShare = 0.1;
 
-std::string horizon_band_name(int k, int w) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / w);
-  return buf;
-}
-
 // Headings of the W product bands (geographic) or of the wedge samples (math frame).
 std::vector<Heading> geographic_headings(int w) {
   std::vector<Heading> h(w);
@@ -372,6 +366,12 @@ double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lightin
 
 Radiance uniform_sky_radiance() {
   return [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
+}
+
+std::string horizon_band_name(int k, int azimuths) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / azimuths);
+  return buf;
 }
 
 }  // namespace skylit::shading

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -147,6 +148,12 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
   shadow.bind_storage(kShadow);
   set_grid_uniforms(sun, field);
   sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
+  // The highest height, plus 1 cm and 1e-6 of it: bilinear rises never exceed it in
+  // float (sun_shadow.comp's early exit).
+  float highest = -std::numeric_limits<float>::infinity();
+  for (float h : field.heights)
+    if (h > highest) highest = h;  // NaN never compares greater
+  sun.set_uniform("max_height", static_cast<float>(highest + 1e-2 + 1e-6 * std::abs(highest)));
   const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
   GpuTimer timer;
   double ms = 0.0;
@@ -205,6 +212,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     const glm::dvec3& s = options.lighting->sun.direction;
     const double azimuth = sky::azimuth_of(s), elevation = sky::elevation_of(s);
     const shading::Heading u = shading::heading_from_geographic(azimuth);
+    const double disc_radius = shading::SunShadowOptions{}.radius;
     GlslDefines sun;
     sun.set("LOCAL_SIZE_X", kLocalSize)
         .set("LOCAL_SIZE_Y", kLocalSize)
@@ -216,7 +224,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("VALID_BINDING", kValid)
         .set("SCHEDULE_BINDING", kSunSchedule)
         .set("SHADOW_BINDING", kShadow)
-        .set("DISC_RADIUS", shading::SunShadowOptions{}.radius);
+        .set("DISC_RADIUS", disc_radius);
     k.sun.emplace(ComputeProgram::from_embedded("sun_shadow.comp", sun));
     // The sun as uniforms: the kernel's source, hence the driver's compiled-kernel
     // cache entry, is the same for every sun position.
@@ -228,6 +236,14 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     p.set_uniform("sun_cos_az", static_cast<float>(std::cos(azimuth)));
     p.set_uniform("sun_sin_el", static_cast<float>(std::sin(elevation)));
     p.set_uniform("sun_cos_el", static_cast<float>(std::cos(elevation)));
+    // sun_shadow.comp's early exit: the slopes of the disc frame's edges y = ±2 (its
+    // clip square), widened by 1e-4 relative so float rounding never exits early.
+    const double top = elevation + 2.0 * disc_radius, bottom = elevation - 2.0 * disc_radius;
+    const double inf = std::numeric_limits<float>::infinity(), near_vertical = std::numbers::pi / 2 - 1e-3;
+    const double hidden = top < near_vertical ? std::tan(top) * (1.0 + 1e-4) + 1e-4 : inf;
+    const double open = bottom > -near_vertical ? std::tan(bottom) - 1e-4 * std::abs(std::tan(bottom)) - 1e-4 : -inf;
+    p.set_uniform("hidden_slope", static_cast<float>(hidden));
+    p.set_uniform("open_slope", static_cast<float>(open));
   }
   if (product == Product::Shadow) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);

@@ -34,6 +34,14 @@ uniform float sun_sin_az;
 uniform float sun_cos_az;
 uniform float sun_sin_el;
 uniform float sun_cos_el;
+// Early exit of the march (sunHorizon), from C++: the field's highest height plus a
+// rounding slack (no bilinear sample rises above it), and the slopes beyond which the
+// disc frame's level y = (sigma - e_s)/r leaves [-2, 2] (the clip square below): above
+// hidden_slope the disc is hidden whatever follows; a horizon that stays below
+// open_slope leaves the square unclipped. Both are widened so rounding cannot exit early.
+uniform float max_height;
+uniform float hidden_slope;
+uniform float open_slope;
 
 // Horn normal: the same code as surface_products.comp (twin of shading::horn_normal).
 float hornHeight(int i, int j, float h0) {
@@ -68,9 +76,11 @@ float bilinearRise(int i, int j, vec2 off, float h0) {
 
 // marched_elevation (sun_light.cpp) for a level-0 plain-max march: running max of
 // slopes, one atan; -pi/2 (finite_elevation of -inf) when no step is on the grid.
+// Stops early where no later step can change the shadow (the uniforms above).
 float sunHorizon(int i, int j) {
   vec2 u = vec2(sun_east, sun_north);
   float h0 = heightAt(i, j);
+  float rise_max = max(max_height - h0, 0.0);
   float best = 0.0;
   bool any = false;
   for (int s = 0; s < steps; ++s) {
@@ -82,6 +92,10 @@ float sunHorizon(int i, int j) {
     float slope = (bilinearRise(i, j, off, h0) - t * t * INV_TWO_R_EFF) / t;
     best = any ? max(best, slope) : slope;
     any = true;
+    // Later steps (t' > t) have slopes below rise_max / t: stop once the result
+    // cannot change any more (the shadow is then the full march's, bit for bit).
+    float bound = rise_max / t;
+    if (best > hidden_slope || bound <= best || max(best, bound) < open_slope) break;
   }
   return any ? clamp(atan(best), -HALF_PI, HALF_PI) : -HALF_PI;
 }

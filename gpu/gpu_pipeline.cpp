@@ -25,6 +25,7 @@
 #include "gpu/resident_field.h"
 #include "gpu/shading_setup.h"
 #include "gpu/timer.h"
+#include "gpu/wedge_fourier.h"
 #include "shading/azimuth.h"
 #include "shading/horizon_march.h"
 #include "shading/horizon_subsample.h"
@@ -51,8 +52,6 @@ enum Binding : int {
   kSchedule = 6,
   kLevels = 7,
   kCoeffs = 8,
-  kWedge = 9,
-  kRotation = 10,
   kTable = 11,
   kShadow = 12,
   kSunSchedule = 13,
@@ -195,8 +194,8 @@ struct GpuProductPipeline::Impl {
   ResidentTable schedule, sun_schedule;
   Buffer no_levels, no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
-  Buffer wedge, rotation, table, gamma;  // shaded and irradiance only (gpu/shading_setup.h)
-  BufferTexture wedge_tex, rotation_tex, table_tex;  // the surface kernel's views (table: table mode)
+  Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
+  BufferTexture table_tex;  // the surface kernel's view (table mode)
   int channels = 1;               // output bands of shaded/irradiance
   std::vector<double> sun_dni;    // lit: the sun's DNI per output channel
   double display_per_irradiance = 0.0;  // lit shaded: the tone map's factor
@@ -304,30 +303,15 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     }
     std::vector<double> occlusion_factors(s.nlp_order, 0.0);
     for (int l = 1; l < s.nlp_order; ++l) occlusion_factors[l] = sh::nlp_norm(l) / (static_cast<double>(l) * (l + 1));
-    std::vector<float> rotation;
-    for (int j = 0; j < k.azimuths; ++j)
-      for (int m = 0; m < s.sh_order; ++m) {
-        rotation.push_back(static_cast<float>(std::cos(m * op.sample_azimuth(j))));
-        rotation.push_back(static_cast<float>(std::sin(m * op.sample_azimuth(j))));
-      }
     prod.set("SH_ORDER", s.sh_order)
         .set("SH_COEFFS", op.rows())
         .set("NLP_ORDER", s.nlp_order)
         .set("NLP_V0_SCALE", sh::nlp_norm(0))
         .set_literal("NLP_OCCLUSION_FACTORS", glsl_float_array_literal(occlusion_factors))
-        .set("WEDGE_ROWS", op.rows())
-        .set("WEDGE_COLS", op.cols())
-        .set("WEDGE_TAPS", op.taps())
-        .set("WEDGE_FIRST_TAP", op.first_tap())
-        .set("WEDGE_LAST_TAP", op.first_tap() + op.taps() - 1)
-        .set("WEDGE_BINDING", kWedge)
-        .set("ROTATION_BINDING", kRotation);
-    k.wedge = Buffer::from(op.matrix_f32());
-    k.rotation = Buffer::from(std::span<const float>(rotation));
+        // Constants, not a buffer: the compiler folds G's zeros and needs no gathers.
+        .set_literal("WEDGE_FOURIER", glsl_float_array_literal(wedge_fourier_matrix(op)));
     k.table = Buffer::from(std::span<const float>(shading.sky));
     k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
-    k.wedge_tex = BufferTexture(k.wedge);
-    k.rotation_tex = BufferTexture(k.rotation);
     if (s.mode == shading::ShadingMode::SkyBrdfTable) k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
   k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
@@ -449,8 +433,6 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     coeffs_tex.bind_sampler(kCoeffs);
   }
   if (needs_visibility(mProduct)) {
-    k.wedge_tex.bind_sampler(kWedge);  // texture units = the bindings
-    k.rotation_tex.bind_sampler(kRotation);
     k.table.bind_storage(kTable);  // the sky SH of the SH modes
     if (k.table_tex.id()) k.table_tex.bind_sampler(kTable);
     k.gamma.bind_storage(kGamma);

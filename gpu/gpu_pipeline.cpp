@@ -262,6 +262,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("COEFFS_BINDING", kCoeffs)
         .set("RAY_TEXTURES", 1)  // heights, row spacing, coefficients: buffer textures at those units
         .set("SUBSAMPLE", options.subsample)
+        .set("EXIT_SLACK", shading::MarchExitSlack::angle)  // early exit (horizon_march.h)
+        .set("EXIT_TAIL", options.march.smooth_max ? shading::MarchExitSlack::smooth_window - 1 : 0)
         .set("COARSE_SIGMA_BINDING", kCoarseSigma)
         .set("VALID_BINDING", kValid);
     k.march.emplace(ComputeProgram::from_embedded("horizon_march.comp", march));
@@ -364,6 +366,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // from the resident heights (rebuilt whole on every call; its tables stay resident).
   std::vector<float> schedule;
   double first_distance = 0.0;
+  float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
   if (!mOptions.exact) {
     const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
     for (std::size_t s = 0; s < steps.distances.size(); ++s) {
@@ -375,8 +378,13 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     if (k.pyramid) {
       const auto pyramid_start = Clock::now();
       t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march));
+      z_bound = static_cast<float>(shading::march_exit_height_bound(k.pyramid->max_coeff()));
       glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
       t.pyramid_ms = ms_since(pyramid_start);
+    } else {  // bilinear level-0 heights; NaN (nodata) never wins
+      float z = -std::numeric_limits<float>::infinity();
+      for (float v : field.heights) z = v > z ? v : z;
+      z_bound = static_cast<float>(shading::march_exit_height_bound(z));
     }
   }
 
@@ -457,6 +465,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
   } else {
     march.set_uniform("steps", static_cast<int>(schedule.size() / 2));
+    march.set_uniform("z_bound", z_bound);
   }
   if (s > 1) {
     march.set_uniform("coarse_width", coarse_x.count());

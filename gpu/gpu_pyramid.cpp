@@ -16,7 +16,7 @@ namespace skylit::gpu {
 namespace {
 
 // Binding points of the pyramid kernels (their own dispatches; rebound every build).
-enum Binding : int { kSrc = 0, kDst = 1, kTaps = 2, kWeights = 3, kCoeffs = 4 };
+enum Binding : int { kSrc = 0, kDst = 1, kTaps = 2, kWeights = 3, kCoeffs = 4, kMax = 5 };
 constexpr int kLocal2d = 8;   // 8×8 outputs per filter work group
 constexpr int kLocal1d = 64;  // lines per solve work group
 
@@ -36,6 +36,7 @@ GlslDefines solve_defines() {
   d.set("LOCAL_SIZE_X", kLocal1d)
       .set("COEFFS_BINDING", kCoeffs)
       .set("WEIGHTS_BINDING", kWeights)
+      .set("MAX_BINDING", kMax)
       .set("OFF_DIAGONAL", terrain::kBSplineOffDiagonal);
   return d;
 }
@@ -123,6 +124,9 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
   mTaps.bind_storage(kTaps);
   mWeights.bind_storage(kWeights);
   mCoeffs.bind_storage(kCoeffs);
+  const std::uint32_t no_key = 0;  // below every float's key
+  mMaxKey = Buffer::from(std::span<const std::uint32_t>(&no_key, 1));
+  mMaxKey.bind_storage(kMax);
   // Level 0 is the heights themselves.
   glCopyNamedBufferSubData(heights.id(), mCoeffs.id(), 0, 0,
                            static_cast<GLsizeiptr>(static_cast<std::size_t>(width) * height * sizeof(float)));
@@ -167,16 +171,25 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     mSolve.set_uniform("line_stride", s.width);
     mSolve.set_uniform("elem_stride", 1);
     mSolve.set_uniform("factor_base", t.factors_x);
+    mSolve.set_uniform("track_max", 0);
     mSolve.dispatch_covering(s.height);
     mSolve.set_uniform("lines", s.width);
     mSolve.set_uniform("n", s.height);
     mSolve.set_uniform("line_stride", 1);
     mSolve.set_uniform("elem_stride", s.width);
     mSolve.set_uniform("factor_base", t.factors_y);
+    mSolve.set_uniform("track_max", 1);
     mSolve.dispatch_covering(s.width);
   }
   throw_on_gl_error("GpuPyramid::build");
   return uploaded;
+}
+
+float GpuPyramid::max_coeff() const {
+  std::uint32_t key = 0;
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  mMaxKey.download(&key, sizeof key, 0);
+  return std::bit_cast<float>((key & 0x80000000u) != 0 ? key & 0x7fffffffu : ~key);
 }
 
 std::vector<float> GpuPyramid::download_level(int l) const {

@@ -41,6 +41,8 @@ class GpuPyramid {
   std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l
   const Buffer& coeffs() const { return mCoeffs; }
   const Buffer& level_table() const { return mLevelTable; }
+  // The largest coefficient of all levels (4 bytes read back; NaN if any is NaN).
+  float max_coeff() const;
   // Level l's coefficients, downloaded (tests).
   std::vector<float> download_level(int l) const;
 
@@ -56,7 +58,7 @@ class GpuPyramid {
     int taps_x = 0, taps_y = 0, factors_x = 0, factors_y = 0;
   };
   std::vector<LevelTables> mTables;
-  Buffer mTaps, mWeights, mCoeffs, mLevelTable, mScratch;
+  Buffer mTaps, mWeights, mCoeffs, mLevelTable, mScratch, mMaxKey;
 };
 
 }  // namespace skylit::gpu

@@ -31,6 +31,10 @@ double tangent_plane_floor(const glm::dvec3& n, Heading u) {
   return -std::atan((n.x * u.east + n.y * u.north) / n.z);
 }
 
+double march_exit_height_bound(double z) {
+  return z + MarchExitSlack::height_rel * std::abs(z) + MarchExitSlack::height_abs;
+}
+
 terrain::PyramidOptions march_pyramid_options(const MarchOptions& options) {
   return terrain::PyramidOptions{.k_v = options.k_v};
 }
@@ -58,6 +62,17 @@ MarchSchedule march_schedule(const terrain::HeightField& field, const MarchOptio
 HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options)
     : field_(field), options_(options), schedule_(march_schedule(field, options)) {
   if (options_.use_pyramid) pyramid_.build(field_, march_pyramid_options(options_));
+  // NaN (nodata) heights never win std::max: NaN-free maxima only.
+  float z = -std::numeric_limits<float>::infinity();
+  auto take = [&z](const std::vector<float>& v) {
+    for (float x : v)
+      if (x > z) z = x;
+  };
+  if (options_.use_pyramid)
+    for (int l = 0; l < pyramid_.levels(); ++l) take(pyramid_.level(l).coeffs);
+  else
+    take(field_.heights);
+  z_bound_ = march_exit_height_bound(z);
 }
 
 double HorizonMarcher::height_at(int step, GridPoint p) const {
@@ -65,7 +80,7 @@ double HorizonMarcher::height_at(int step, GridPoint p) const {
   return pyramid_.sample(schedule_.levels[step], p.x, p.y, terrain::Interpolation::CubicBSpline);
 }
 
-double HorizonMarcher::max_elevation(int i, int j, Heading u) const {
+double HorizonMarcher::max_elevation(int i, int j, Heading u, bool early_exit, int* steps_marched) const {
   const double h0 = field_.at(i, j);
   // Slopes tan ω_s of the steps that lie on the grid (a prefix of the schedule).
   // atan is monotonic, so angles are taken only where the result needs them.
@@ -79,14 +94,40 @@ double HorizonMarcher::max_elevation(int i, int j, Heading u) const {
     q = slope_heap.data(), w = angle_heap.data();
   }
   int m = 0, steepest = 0;
-  for (int s = 0; s < steps(); ++s) {
+  // Early exit (MarchExitSlack): stop once the bound at step s is below what the
+  // steps so far already give; the smooth max still reads the 3 steps whose windows
+  // hold earlier angles (the rest only add windows ≤ the bound, harmless).
+  int stop = early_exit ? steps() : -1;
+  // Max of the windows (knot s' and midpoint: angles s'−1 … s'+2, start clamped) within
+  // the first m slopes, kept as m grows: ≤ the final result.
+  int windows = 0, angles = 0;
+  double running = -std::numeric_limits<double>::infinity();
+  auto smooth_lower_bound = [&] {
+    for (; angles < m; ++angles) w[angles] = std::atan(q[angles]);
+    for (; windows + 2 < m; ++windows) {
+      const double a = w[std::max(windows - 1, 0)], b = w[windows], c = w[windows + 1], d = w[windows + 2];
+      running = std::max({running, (a + 4.0 * b + c) / 6.0, (a + 23.0 * b + 23.0 * c + d) / 48.0});
+    }
+    return running;
+  };
+  for (int s = 0; s < steps() && s != stop; ++s) {
     const double t = schedule_.distances[s];
+    if (stop == steps() && m > 0) {
+      const double bound = std::max(z_bound_ - h0, 0.0) / t;
+      if (bound < q[steepest]) {  // necessary for both; the smooth max needs its windows
+        if (!options_.smooth_max) break;
+        if (std::atan(bound) + MarchExitSlack::angle <= smooth_lower_bound()) {
+          stop = s + MarchExitSlack::smooth_window - 1;
+        }
+      }
+    }
     const GridPoint p = ray_point(field_, i, j, u, t);
     if (!on_grid(field_, p)) break;
     q[m] = (height_at(s, p) - options_.curvature.drop(t) - h0) / t;
     if (q[m] > q[steepest]) steepest = m;
     ++m;
   }
+  if (steps_marched) *steps_marched = m;
   if (m == 0) return -std::numeric_limits<double>::infinity();
   if (!options_.smooth_max) return std::atan(q[steepest]);
   // Uniform cubic B-spline through the angles, ends replicated: max of the curve at

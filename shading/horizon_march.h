@@ -62,6 +62,17 @@ struct MarchSchedule {
 };
 MarchSchedule march_schedule(const terrain::HeightField& field, const MarchOptions& options);
 
+// Exact early exit of the march: every height a step reads is a convex combination of
+// pyramid coefficients (level-0 heights when bilinear), so ≤ their max z; a step at
+// t' ≥ t then has angle ≤ atan(max(z − h0, 0)/t). Slack on z (float sums overshoot
+// by ulps) and on the angle comparison keeps the exit from ever changing a result.
+struct MarchExitSlack {
+  static constexpr double height_rel = 1e-4, height_abs = 1e-2;  // z_bound = z + rel·|z| + abs (m)
+  static constexpr double angle = 1e-6;                          // rad
+  static constexpr int smooth_window = 4;                        // angles per smooth-max window
+};
+double march_exit_height_bound(double max_height);
+
 // The pyramid options the march samples (k_v levels per halving, automatic count).
 terrain::PyramidOptions march_pyramid_options(const MarchOptions& options);
 
@@ -71,8 +82,9 @@ class HorizonMarcher {
   HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options);
 
   // Largest blocking angle (radians) from texel (i, j) along u; −∞ if no step lies
-  // on the grid. Thread-safe.
-  double max_elevation(int i, int j, Heading u) const;
+  // on the grid. Thread-safe. early_exit false: every step (tests of the exit).
+  // steps_marched, if given, receives the steps read.
+  double max_elevation(int i, int j, Heading u, bool early_exit = true, int* steps_marched = nullptr) const;
 
   int steps() const { return static_cast<int>(schedule_.distances.size()); }
   double distance(int s) const { return schedule_.distances[s]; }  // t_s (m)
@@ -90,6 +102,7 @@ class HorizonMarcher {
   MarchOptions options_;
   terrain::HeightPyramid pyramid_;
   MarchSchedule schedule_;
+  double z_bound_ = 0.0;  // march_exit_height_bound of every height the march reads
 };
 
 }  // namespace skylit::shading

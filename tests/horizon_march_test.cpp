@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -207,6 +208,39 @@ TEST(HorizonMarch, MaxDistanceIsHonoured) {
   o.max_distance_m = 100.0;
   o.smooth_max = false;
   EXPECT_NEAR(HorizonMarcher(f, o).max_elevation(122, 100, west), std::atan(0.5), 1e-12);
+}
+
+// The early exit (MarchExitSlack) must return exactly what the full march returns, on
+// scenes where it fires (pit, wall, plane, rough ground) and where it cannot (flat), for
+// both maxima, with and without the pyramid, and save steps somewhere.
+TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
+  std::vector<terrain::HeightField> scenes;
+  scenes.push_back(test::radial_pit(65, 2.0, 6, 20, 15));
+  scenes.push_back(test::wall(65, 2.0, 20, 3, 12, 30.0));
+  scenes.push_back(test::tilted_plane(65, 2.0, 10 * kDeg));
+  scenes.push_back(test::make_field(33, 33, 1.0));
+  auto rough = test::make_field(65, 65, 5.0);
+  std::uint32_t state = 12345;  // LCG: heights in [0, 100) m
+  for (float& z : rough.heights) z = static_cast<float>((state = state * 1664525u + 1013904223u) >> 8) * 100.0f / 16777216.0f;
+  scenes.push_back(std::move(rough));
+  long full_steps = 0, exit_steps = 0;
+  for (const auto& f : scenes)
+    for (bool smooth : {true, false})
+      for (bool pyramid : {true, false}) {
+        MarchOptions o;
+        o.smooth_max = smooth, o.use_pyramid = pyramid;
+        const HorizonMarcher m(f, o);
+        for (int j = 0; j < f.height; j += 3)
+          for (int i = 0; i < f.width; i += 3)
+            for (int k = 0; k < 16; ++k) {
+              const Heading u = heading_from_geographic(band_azimuth(k, 16));
+              int n_full = 0, n_exit = 0;
+              const double full = m.max_elevation(i, j, u, false, &n_full);
+              EXPECT_EQ(m.max_elevation(i, j, u, true, &n_exit), full) << i << "," << j << " k=" << k;
+              full_steps += n_full, exit_steps += n_exit;
+            }
+      }
+  EXPECT_LT(exit_steps, full_steps);
 }
 
 }  // namespace

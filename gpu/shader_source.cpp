@@ -85,9 +85,9 @@ class Assembler {
 }  // namespace
 
 std::string glsl_float_literal(double value) {
-  if (!std::isfinite(value)) throw std::invalid_argument("GLSL literal must be finite");
+  if (!std::isfinite(static_cast<float>(value))) throw std::invalid_argument("GLSL literal must be a finite float");
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", value);
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(static_cast<float>(value)));
   std::string s(buf);
   if (s.find_first_of(".eE") == std::string::npos) s += ".0";
   return s;

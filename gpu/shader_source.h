@@ -30,7 +30,10 @@ class GlslDefines {
   std::vector<std::pair<std::string, std::string>> mEntries;
 };
 
-// Float literal for GLSL (always with '.' or exponent, 9 significant digits).
+// Float literal for GLSL (always with '.' or exponent): the value rounded to float32 once,
+// in C++, and written with the 9 significant digits that bring exactly that float back,
+// so the shader's constant equals static_cast<float>(value) (printing the double would
+// round twice: to 9 digits, then the compiler to float, which can land one ulp off).
 std::string glsl_float_literal(double value);
 // GLSL array constructor of those literals: "float[n](a, b, …)".
 std::string glsl_float_array_literal(std::span<const double> values);

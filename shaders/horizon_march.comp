@@ -9,10 +9,10 @@
 // cubic B-spline through the angles at knots and midpoints (ends replicated).
 // Raw maxima, no floor: the product kernel applies the floors.
 // Exact early exit: every height read is a convex combination of coefficients (or
-// heights), so ≤ z_bound, and a step at t' ≥ t has angle ≤ atan(max(z_bound - h0, 0)/t).
+// heights), so <= z_bound, and a step at t' >= t has angle <= atan(max(z_bound - h0, 0)/t).
 // Once that is below best (less EXIT_SLACK for rounding), later steps cannot raise it:
 // the plain max stops; the smooth max still marches the EXIT_TAIL steps whose windows
-// hold earlier angles, then stops without the end replication (windows ≤ the bound).
+// hold earlier angles, then stops without the end replication (windows <= the bound).
 // Sub-sampling (SUBSAMPLE s > 1, shading::ProductOptions::subsample; CPU twin:
 // HorizonSource in shading/reference_pipeline.cpp): pass 0 marches the coarse texels a
 // row chunk needs into coarse_sigma; pass 1 writes every texel's sigma, bilinear from
@@ -54,7 +54,7 @@ float coeff(int index) { return coeffs[index]; }
 layout(std430, binding = SIGMA_BINDING) writeonly buffer Sigma { float sigma[]; };
 
 uniform int steps;       // n_v
-uniform float z_bound;   // ≥ every height the march reads (+inf: no early exit)
+uniform float z_bound;   // >= every height the march reads (+inf: no early exit)
 uniform int row_offset;  // first row of this dispatch
 uniform int chunk_rows;  // rows of the sigma buffer
 

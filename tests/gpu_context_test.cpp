@@ -16,7 +16,6 @@
 #include "gpu/embedded_shaders.h"
 #include "gpu/gl_context.h"
 #include "gpu/shader_source.h"
-#include "gpu/tables.h"
 #include "gpu/timer.h"
 #include "shading/wedge.h"
 
@@ -152,44 +151,32 @@ TEST_F(GpuContextTest, LinkedProgramReportsLocalSizeAndRejectsUnknownUniforms) {
   EXPECT_THROW(p.set_uniform("not_there", 1), std::runtime_error);
 }
 
-// C++ values reach the shader unchanged through the generated #define block, and
-// C++-computed tables (here the shading library's wedge operator) through SSBO and UBO.
-TEST_F(GpuContextTest, GeneratedDefinesAndTablesReachTheShader) {
+// C++ values reach the shader unchanged through the generated #define block, scalars
+// and whole constant arrays (here the shading library's wedge operator, as the surface
+// kernel gets its wedge matrix).
+TEST_F(GpuContextTest, GeneratedDefinesAndConstantArraysReachTheShader) {
   const sh::WedgeOperator& op = sh::wedge_operator(4, 8, 32, sh::WedgeInterpolation::Linear);
-  const GpuTable storage = upload_storage_table(op.matrix(), op.rows(), op.cols());
-  const GpuTable uniform = upload_uniform_table(op.matrix(), op.rows(), op.cols());
+  const std::span<const double> m = op.matrix();
   GlslDefines d;
-  d.set("PI", std::numbers::pi).set("ANSWER", 42);
-  define_table_shape(d, "WEDGE", storage);
-  const ComputeProgram p = inline_program("tables.comp", R"(#version 450
+  d.set("PI", std::numbers::pi).set("ANSWER", 42).set("WEDGE_SIZE", static_cast<int>(m.size()));
+  d.set_literal("WEDGE", glsl_float_array_literal(m));
+  const ComputeProgram p = inline_program("constants.comp", R"(#version 450
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Storage { float wedge_ssbo[WEDGE_SIZE]; };
-layout(std140, binding = 1) uniform Uniform { vec4 wedge_ubo[(WEDGE_SIZE + 3) / 4]; };
-layout(std430, binding = 2) writeonly buffer Out { float result[]; };
+layout(std430, binding = 0) writeonly buffer Out { float result[]; };
 void main() {
+  const float wedge[WEDGE_SIZE] = WEDGE;
   uint k = gl_GlobalInvocationID.x;
-  if (k == 0u) { result[0] = PI; result[1] = float(ANSWER); result[2] = float(WEDGE_ROWS * 1000 + WEDGE_COLS); }
-  if (k < uint(WEDGE_SIZE)) {
-    result[3u + k] = wedge_ssbo[k];
-    result[3u + uint(WEDGE_SIZE) + k] = wedge_ubo[k / 4u][k % 4u];
-  }
+  if (k == 0u) { result[0] = PI; result[1] = float(ANSWER); }
+  if (k < uint(WEDGE_SIZE)) result[2u + k] = wedge[k];
 }
 )", d);
-  const std::size_t n = op.matrix().size();
-  Buffer out((3 + 2 * n) * sizeof(float));
-  storage.buffer.bind_storage(0);
-  uniform.buffer.bind_uniform(1);
-  out.bind_storage(2);
-  p.dispatch_covering(static_cast<int>(n));
+  Buffer out((2 + m.size()) * sizeof(float));
+  out.bind_storage(0);
+  p.dispatch_covering(static_cast<int>(m.size()));
   const std::vector<float> r = out.download_all<float>();
   EXPECT_EQ(r[0], static_cast<float>(std::numbers::pi));
   EXPECT_EQ(r[1], 42.0f);
-  EXPECT_EQ(r[2], static_cast<float>(op.rows() * 1000 + op.cols()));
-  const std::span<const float> m = op.matrix_f32();
-  for (std::size_t k = 0; k < n; ++k) {
-    ASSERT_EQ(r[3 + k], m[k]) << "SSBO element " << k;
-    ASSERT_EQ(r[3 + n + k], m[k]) << "UBO element " << k;
-  }
+  for (std::size_t k = 0; k < m.size(); ++k) ASSERT_EQ(r[2 + k], static_cast<float>(m[k])) << "element " << k;
 }
 
 TEST_F(GpuContextTest, BuffersAndTexturesRoundTrip) {

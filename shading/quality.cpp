@@ -30,8 +30,9 @@ std::optional<Quality> parse_quality(std::string_view name) {
 }
 
 QualitySettings quality_settings(Quality q) {
-  // Chosen from the front measured on the CPU reference at 128² and 256²
-  // (docs/quality-presets.md); the GPU front must be re-measured with `skylit bench`.
+  // Chosen from the front measured on the CPU reference at 128² and 256² and confirmed
+  // on the GPU front (llvmpipe, 256²; docs/quality-presets.md); an NVIDIA front is still
+  // to be measured with `skylit bench --backend gpu`.
   // Each preset changes one knob of the defaults:
   QualitySettings s = library_defaults();
   switch (q) {

@@ -103,6 +103,24 @@ TEST(CliShade, SaysWhichBackendComputed) {
       << g.out;
 }
 
+// --timings: one line per stage, also with -q, and the stages of the backend that ran.
+TEST(CliShade, TimingsNameEveryStage) {
+  ScratchDir dir;
+  const auto r = run_skylit("shade --synthetic --size 16 --azimuths 4 -p svf --backend reference -q --timings -o " +
+                                dir.file("s.tif"),
+                            true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* stage : {"time read DEM", "time compute (CPU reference)", "time write output"})
+    EXPECT_NE(r.out.find(stage), std::string::npos) << stage << "\n" << r.out;
+  EXPECT_EQ(r.out.find("pyramid build"), std::string::npos) << "no GPU stages on the reference\n" << r.out;
+  const auto g = run_skylit("shade --synthetic --size 16 --azimuths 4 -p svf -q --timings -o " + dir.file("g.tif"), true);
+  ASSERT_EQ(g.status, 0) << g.out;
+  EXPECT_NE(g.out.find("time write output"), std::string::npos) << g.out;
+  if (g.out.find("compute (all GPU stages)") != std::string::npos)
+    for (const char* stage : {"time OpenGL context", "time compile kernels", "time pyramid build"})
+      EXPECT_NE(g.out.find(stage), std::string::npos) << stage << "\n" << g.out;
+}
+
 TEST(CliShade, BadInputFailsCleanly) {
   ScratchDir dir;
   const std::string hill = make_hill(dir);

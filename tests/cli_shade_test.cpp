@@ -116,9 +116,10 @@ TEST(CliShade, TimingsNameEveryStage) {
   const auto g = run_skylit("shade --synthetic --size 16 --azimuths 4 -p svf -q --timings -o " + dir.file("g.tif"), true);
   ASSERT_EQ(g.status, 0) << g.out;
   EXPECT_NE(g.out.find("time write output"), std::string::npos) << g.out;
-  if (g.out.find("compute (all GPU stages)") != std::string::npos)
+  if (g.out.find("compute (all GPU stages)") != std::string::npos) {
     for (const char* stage : {"time OpenGL context", "time compile kernels", "time pyramid build"})
       EXPECT_NE(g.out.find(stage), std::string::npos) << stage << "\n" << g.out;
+  }
 }
 
 TEST(CliShade, BadInputFailsCleanly) {

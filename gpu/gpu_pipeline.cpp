@@ -49,8 +49,7 @@ enum Binding : int {
   kSigma = 3,
   kValid = 4,
   kOutput = 5,
-  kSchedule = 6,
-  kLevels = 7,
+  kSchedule = 6,  // a uniform block (horizon_march.comp)
   kCoeffs = 8,
   kTable = 11,
   kShadow = 12,
@@ -59,6 +58,9 @@ enum Binding : int {
   kGamma = 15,
 };
 
+// Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
+// block size): k_v = 16 over a 16384² grid's diagonal needs 234.
+constexpr int kMaxMarchSteps = 256;
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
 
 using Clock = std::chrono::steady_clock;
@@ -192,7 +194,7 @@ struct GpuProductPipeline::Impl {
   // only its changed rows; the schedules only when they change.
   ResidentField field;
   ResidentTable schedule, sun_schedule;
-  Buffer no_levels, no_coeffs;  // bound in place of the pyramid without use_pyramid
+  Buffer no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
   Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
   BufferTexture table_tex;  // the surface kernel's view (table mode)
@@ -258,7 +260,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     march.set("SMOOTH_MAX", options.march.smooth_max ? 1 : 0)
         .set("USE_PYRAMID", options.march.use_pyramid ? 1 : 0)
         .set("SCHEDULE_BINDING", kSchedule)
-        .set("LEVELS_BINDING", kLevels)
+        .set("MAX_STEPS", kMaxMarchSteps)
         .set("COEFFS_BINDING", kCoeffs)
         .set("RAY_TEXTURES", 1)  // heights, row spacing, coefficients: buffer textures at those units
         .set("SUBSAMPLE", options.subsample)
@@ -270,7 +272,6 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     if (options.march.use_pyramid) {
       k.pyramid.emplace();
     } else {  // unused by the kernel; GL wants non-empty buffers bound
-      k.no_levels = Buffer(8 * sizeof(std::int32_t));
       k.no_coeffs = Buffer(sizeof(float));
     }
   }
@@ -364,17 +365,16 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
 
   // Stage 1: the marcher's step schedule (C++) and the height pyramid, built on the GPU
   // from the resident heights (rebuilt whole on every call; its tables stay resident).
-  std::vector<float> schedule;
+  int steps_count = 0;
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
   if (!mOptions.exact) {
     const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
-    for (std::size_t s = 0; s < steps.distances.size(); ++s) {
-      schedule.push_back(static_cast<float>(steps.distances[s]));
-      schedule.push_back(static_cast<float>(steps.levels[s]));
-    }
+    steps_count = static_cast<int>(steps.distances.size());
+    if (steps_count > kMaxMarchSteps)
+      throw std::runtime_error("GPU pipeline: the march has " + std::to_string(steps_count) + " steps, over the kernel's " +
+                               std::to_string(kMaxMarchSteps));
     first_distance = steps.distances.front();
-    t.uploaded_bytes += k.schedule.assign(schedule);
     if (k.pyramid) {
       const auto pyramid_start = Clock::now();
       t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march));
@@ -386,6 +386,23 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       for (float v : field.heights) z = v > z ? v : z;
       z_bound = static_cast<float>(shading::march_exit_height_bound(z));
     }
+    // The step table (horizon_march.comp's uniform block, padded to MAX_STEPS): per
+    // step its distance and its level's geometry, so the kernel reads no level table.
+    std::vector<float> table(static_cast<std::size_t>(kMaxMarchSteps) * 8, 0.0f);
+    for (int st = 0; st < steps_count; ++st) {
+      float* geom = &table[4 * static_cast<std::size_t>(st)];
+      float* level = &table[4 * static_cast<std::size_t>(kMaxMarchSteps + st)];
+      const int l = steps.levels[st];
+      geom[0] = static_cast<float>(steps.distances[st]);
+      if (k.pyramid) {
+        const terrain::LevelShape& shape = k.pyramid->shape(l);
+        geom[1] = static_cast<float>(shape.step_x);
+        geom[2] = static_cast<float>(shape.step_y);
+        const std::int32_t ints[4] = {shape.width, shape.height, static_cast<std::int32_t>(k.pyramid->offset(l)), l};
+        for (int c = 0; c < 4; ++c) level[c] = std::bit_cast<float>(ints[c]);
+      }
+    }
+    t.uploaded_bytes += k.schedule.assign(table);
   }
 
   // Per-chunk buffers, and every buffer bound.
@@ -431,8 +448,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // buffer textures (views of the resident buffers, texture units = their bindings).
   BufferTexture heights_tex, row_dx_tex, coeffs_tex;
   if (!mOptions.exact) {
-    k.schedule.buffer().bind_storage(kSchedule);
-    (k.pyramid ? k.pyramid->level_table() : k.no_levels).bind_storage(kLevels);
+    k.schedule.buffer().bind_uniform(kSchedule);
     heights_tex = BufferTexture(k.field.heights());
     row_dx_tex = BufferTexture(k.field.row_dx());
     coeffs_tex = BufferTexture(k.pyramid ? k.pyramid->coeffs() : k.no_coeffs);
@@ -464,7 +480,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
                                                              : shading::dem_extent(field);
     march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
   } else {
-    march.set_uniform("steps", static_cast<int>(schedule.size() / 2));
+    march.set_uniform("steps", steps_count);
     march.set_uniform("z_bound", z_bound);
   }
   if (s > 1) {

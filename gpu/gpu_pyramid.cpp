@@ -86,7 +86,7 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     mShapes.clear();
     mOffsets.clear();
     mTables.assign(n, {});
-    std::vector<std::int32_t> taps, table;
+    std::vector<std::int32_t> taps;
     std::vector<float> weights;
     std::size_t total = 0, scratch = 1;
     for (int l = 0; l < n; ++l) {
@@ -101,10 +101,7 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       }
       t.factors_x = append_factors(s.width, weights);
       t.factors_y = append_factors(s.height, weights);
-      const std::int32_t dims[4] = {s.width, s.height, to_index(total, "the pyramid"), 0};
-      const float scale[4] = {static_cast<float>(s.step_x), static_cast<float>(s.step_y), 0.0f, 0.0f};
-      table.insert(table.end(), dims, dims + 4);
-      for (float f : scale) table.push_back(std::bit_cast<std::int32_t>(f));
+      to_index(total, "the pyramid");  // the march indexes coefficients with int
       total += static_cast<std::size_t>(s.width) * s.height;
     }
     if (taps.empty()) taps.assign(4, 0);  // GL wants non-empty buffers bound
@@ -114,10 +111,9 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     to_index(total + scratch, "the pyramid");
     mTaps = Buffer::from(std::span<const std::int32_t>(taps));
     mWeights = Buffer::from(std::span<const float>(weights));
-    mLevelTable = Buffer::from(std::span<const std::int32_t>(table));
     mCoeffs = Buffer(total * sizeof(float));
     mScratch = Buffer(scratch * sizeof(float));
-    uploaded = mTaps.size_bytes() + mWeights.size_bytes() + mLevelTable.size_bytes();
+    uploaded = mTaps.size_bytes() + mWeights.size_bytes();
     mWidth = width, mHeight = height, mOptions = options;
   }
 

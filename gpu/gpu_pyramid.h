@@ -11,8 +11,8 @@
 // the field's size alone, so they are uploaded once per size and kept.
 //
 // Output layout (what shaders/horizon_march.comp reads): every level's coefficients
-// row-major, levels back to back in one buffer; a level table with, per level,
-// ivec4(width, height, offset of its first coefficient, 0) and vec4(step_x, step_y, 0, 0).
+// row-major, levels back to back in one buffer; shape(l) and offset(l) give each level's
+// geometry (the march's step table carries it per step, gpu_pipeline.cpp).
 #pragma once
 
 #include <cstddef>
@@ -40,7 +40,6 @@ class GpuPyramid {
   const terrain::LevelShape& shape(int l) const { return mShapes.at(l); }
   std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l
   const Buffer& coeffs() const { return mCoeffs; }
-  const Buffer& level_table() const { return mLevelTable; }
   // The largest coefficient of all levels (4 bytes read back; NaN if any is NaN).
   float max_coeff() const;
   // Level l's coefficients, downloaded (tests).
@@ -58,7 +57,7 @@ class GpuPyramid {
     int taps_x = 0, taps_y = 0, factors_x = 0, factors_y = 0;
   };
   std::vector<LevelTables> mTables;
-  Buffer mTaps, mWeights, mCoeffs, mLevelTable, mScratch, mMaxKey;
+  Buffer mTaps, mWeights, mCoeffs, mScratch, mMaxKey;
 };
 
 }  // namespace skylit::gpu

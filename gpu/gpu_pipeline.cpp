@@ -64,7 +64,6 @@ constexpr int kMaxMarchSteps = 256;
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Bands of the raw horizons a product needs, as compute_product chooses them.
 int horizon_bands(Product product, const shading::ProductOptions& o) {
@@ -149,12 +148,9 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
   shadow.bind_storage(kShadow);
   set_grid_uniforms(sun, field);
   sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
-  // The highest height, plus 1 cm and 1e-6 of it: bilinear rises never exceed it in
-  // float (sun_shadow.comp's early exit).
-  float highest = -std::numeric_limits<float>::infinity();
-  for (float h : field.heights)
-    if (h > highest) highest = h;  // NaN never compares greater
-  sun.set_uniform("max_height", static_cast<float>(highest + 1e-2 + 1e-6 * std::abs(highest)));
+  // The highest height with the march's rounding slack: bilinear rises never exceed it
+  // in float (sun_shadow.comp's early exit).
+  sun.set_uniform("max_height", static_cast<float>(shading::march_exit_height_bound(field.heights)));
   const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
   GpuTimer timer;
   double ms = 0.0;
@@ -381,10 +377,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       z_bound = static_cast<float>(shading::march_exit_height_bound(k.pyramid->max_coeff()));
       glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
       t.pyramid_ms = ms_since(pyramid_start);
-    } else {  // bilinear level-0 heights; NaN (nodata) never wins
-      float z = -std::numeric_limits<float>::infinity();
-      for (float v : field.heights) z = v > z ? v : z;
-      z_bound = static_cast<float>(shading::march_exit_height_bound(z));
+    } else {  // bilinear level-0 heights
+      z_bound = static_cast<float>(shading::march_exit_height_bound(field.heights));
     }
     // The step table (horizon_march.comp's uniform block, padded to MAX_STEPS): per
     // step its distance and its level's geometry, so the kernel reads no level table.

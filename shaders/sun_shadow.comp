@@ -35,7 +35,8 @@ uniform float sun_cos_az;
 uniform float sun_sin_el;
 uniform float sun_cos_el;
 // Early exit of the march (sunHorizon), from C++: the field's highest height plus a
-// rounding slack (no bilinear sample rises above it), and the slopes beyond which the
+// rounding slack (shading::march_exit_height_bound: no bilinear sample rises above it;
+// +inf: no exit), and the slopes beyond which the
 // disc frame's level y = (sigma - e_s)/r leaves [-2, 2] (the clip square below): above
 // hidden_slope the disc is hidden whatever follows; a horizon that stays below
 // open_slope leaves the square unclipped. Both are widened so rounding cannot exit early.

@@ -32,7 +32,15 @@ double tangent_plane_floor(const glm::dvec3& n, Heading u) {
 }
 
 double march_exit_height_bound(double z) {
+  if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
   return z + MarchExitSlack::height_rel * std::abs(z) + MarchExitSlack::height_abs;
+}
+
+double march_exit_height_bound(std::span<const float> values) {
+  float z = -std::numeric_limits<float>::infinity();
+  for (float v : values)
+    if (v > z) z = v;  // NaN never compares greater
+  return march_exit_height_bound(static_cast<double>(z));
 }
 
 terrain::PyramidOptions march_pyramid_options(const MarchOptions& options) {
@@ -62,17 +70,10 @@ MarchSchedule march_schedule(const terrain::HeightField& field, const MarchOptio
 HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOptions& options)
     : field_(field), options_(options), schedule_(march_schedule(field, options)) {
   if (options_.use_pyramid) pyramid_.build(field_, march_pyramid_options(options_));
-  // NaN (nodata) heights never win std::max: NaN-free maxima only.
-  float z = -std::numeric_limits<float>::infinity();
-  auto take = [&z](const std::vector<float>& v) {
-    for (float x : v)
-      if (x > z) z = x;
-  };
-  if (options_.use_pyramid)
-    for (int l = 0; l < pyramid_.levels(); ++l) take(pyramid_.level(l).coeffs);
-  else
-    take(field_.heights);
-  z_bound_ = march_exit_height_bound(z);
+  // The bound grows with the maximum, so the largest per-level bound is the bound of all.
+  z_bound_ = options_.use_pyramid ? -std::numeric_limits<double>::infinity() : march_exit_height_bound(field_.heights);
+  for (int l = 0; options_.use_pyramid && l < pyramid_.levels(); ++l)
+    z_bound_ = std::max(z_bound_, march_exit_height_bound(pyramid_.level(l).coeffs));
 }
 
 double HorizonMarcher::height_at(int step, GridPoint p) const {

@@ -25,6 +25,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <span>
 #include <vector>
 
 namespace skylit::shading {
@@ -71,7 +72,10 @@ struct MarchExitSlack {
   static constexpr double angle = 1e-6;                          // rad
   static constexpr int smooth_window = 4;                        // angles per smooth-max window
 };
+// max_height plus the slack; +∞ (no exit) unless max_height is finite.
 double march_exit_height_bound(double max_height);
+// The same for the largest of `values` (NaN, i.e. nodata, skipped; +∞ if none).
+double march_exit_height_bound(std::span<const float> values);
 
 // The pyramid options the march samples (k_v levels per halving, automatic count).
 terrain::PyramidOptions march_pyramid_options(const MarchOptions& options);

@@ -213,6 +213,19 @@ TEST(HorizonMarch, MaxDistanceIsHonoured) {
 // The early exit (MarchExitSlack) must return exactly what the full march returns, on
 // scenes where it fires (pit, wall, plane, rough ground) and where it cannot (flat), for
 // both maxima, with and without the pyramid, and save steps somewhere.
+// The exit's height bound: above the largest height, NaN (nodata) skipped, and no exit
+// (+inf) where there is no height to bound.
+TEST(HorizonMarch, ExitHeightBoundSkipsNodataAndNeverUndercuts) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> heights = {120.0f, nan, 2500.5f, -30.0f};
+  const double bound = shading::march_exit_height_bound(heights);
+  EXPECT_GT(bound, 2500.5);
+  EXPECT_LT(bound, 2500.5 + 1.0);
+  const std::vector<float> none = {nan, nan};
+  EXPECT_EQ(shading::march_exit_height_bound(none), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(shading::march_exit_height_bound(std::span<const float>()), std::numeric_limits<double>::infinity());
+}
+
 TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
   std::vector<terrain::HeightField> scenes;
   scenes.push_back(test::radial_pit(65, 2.0, 6, 20, 15));

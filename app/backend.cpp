@@ -2,6 +2,7 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
+#include "gpu/timer.h"
 
 #include <chrono>
 #include <iostream>
@@ -16,10 +17,6 @@ std::string one_line(std::string text) {
   for (char& c : text)
     if (c == '\n' || c == '\r') c = ' ';
   return text;
-}
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::unique_ptr<gpu::HeadlessContext> try_context(std::string* why) {
@@ -37,10 +34,10 @@ shading::ProductBands run_gpu(const gpu::HeadlessContext& context, const terrain
   context.make_current();
   const auto compile_start = std::chrono::steady_clock::now();
   const gpu::GpuProductPipeline pipeline(product, options);  // destroyed while current
-  report.compile_ms = ms_since(compile_start);
+  report.compile_ms = gpu::ms_since(compile_start);
   const auto compute_start = std::chrono::steady_clock::now();
   auto bands = pipeline.compute(field, progress, &report.gpu);
-  report.compute_ms = ms_since(compute_start);
+  report.compute_ms = gpu::ms_since(compute_start);
   report.on_gpu = true;
   return bands;
 }
@@ -62,7 +59,7 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
     r.on_gpu = false;
     const auto start = std::chrono::steady_clock::now();
     auto bands = shading::compute_product(field, product, options, progress);
-    r.compute_ms = ms_since(start);
+    r.compute_ms = gpu::ms_since(start);
     return bands;
   };
   if (backend == "reference") return reference("");
@@ -78,7 +75,7 @@ shading::ProductBands compute_with_backend(const std::string& backend, const ter
     std::string why;
     const auto context_start = std::chrono::steady_clock::now();
     const auto context = try_context(&why);
-    r.context_ms = ms_since(context_start);
+    r.context_ms = gpu::ms_since(context_start);
     if (!context) {
       if (backend == "gpu") throw std::runtime_error("--backend gpu: " + why);
       return reference("no OpenGL 4.5 context");  // auto: no GL 4.5 here

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/shade_output.h"
+#include "gpu/timer.h"
 
 #include "shading/lighting.h"
 #include "shading/products.h"
@@ -66,10 +67,6 @@ std::optional<sun::Observer> dem_place(const terrain::HeightField& f) {
   return sun::Observer{at->latitude_deg, at->longitude_deg, f.at(f.width / 2, f.height / 2)};
 }
 
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 // `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
 // from the pipeline (gpu/gpu_pipeline.h GpuPipelineTimings says which clock each uses).
 void print_timings(double read_ms, const BackendReport& r, double write_ms) {
@@ -127,7 +124,7 @@ int run_shade(const ShadeArgs& a) {
 
   const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);
-  const double read_ms = ms_since(read_start);
+  const double read_ms = gpu::ms_since(read_start);
 
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
@@ -145,7 +142,7 @@ int run_shade(const ShadeArgs& a) {
   if (!a.quiet) std::cerr << "skylit: computed on " << report.used << "\n";
   const auto write_start = std::chrono::steady_clock::now();
   write_product(out, field, bands);
-  if (a.timings) print_timings(read_ms, report, ms_since(write_start));
+  if (a.timings) print_timings(read_ms, report, gpu::ms_since(write_start));
   if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
                           << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";
   return 0;

@@ -1,10 +1,17 @@
 // GPU-side timing with GL_TIME_ELAPSED queries, for benchmarks: measures the time the
 // GPU spent on the commands issued between begin() and end(), excluding CPU overhead.
+// And the wall clock the stages are reported in where a driver has no GPU timer.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 
 namespace skylit::gpu {
+
+// Wall-clock milliseconds since `start` (std::chrono::steady_clock).
+inline double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 class GpuTimer {
  public:

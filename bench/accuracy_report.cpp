@@ -95,13 +95,13 @@ struct Variant {
 
 std::vector<Variant> variants() {
   std::vector<Variant> v;
-  v.push_back({"default (W 32, k_v 4, o_v 2, B-spline max)", {}});
+  v.push_back({"default (W 32, k_v 4, o_v 3, B-spline max)", {}});
   Variant plain{"plain max", {}};
   plain.march.smooth_max = false;
   v.push_back(plain);
-  Variant ov3{"o_v 3", {}};
-  ov3.march.level_offset = 3;
-  v.push_back(ov3);
+  Variant ov2{"o_v 2", {}};
+  ov2.march.level_offset = 2;
+  v.push_back(ov2);
   Variant ov1{"o_v 1", {}};
   ov1.march.level_offset = 1;
   v.push_back(ov1);
@@ -111,6 +111,9 @@ std::vector<Variant> variants() {
   Variant w64{"W 64", {}};
   w64.march.azimuths = 64;
   v.push_back(w64);
+  Variant bilinear{"bilinear levels", {}};
+  bilinear.march.level_interpolation = terrain::Interpolation::Bilinear;
+  v.push_back(bilinear);
   Variant flat{"no pyramid (level 0 bilinear)", {}};
   flat.march.use_pyramid = false;
   v.push_back(flat);

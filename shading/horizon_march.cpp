@@ -18,6 +18,34 @@ void validate(const MarchOptions& o) {
     throw std::invalid_argument("march: Earth radius must be > 0 and refraction k < 1");
 }
 
+LevelSampling level_sampling(const MarchOptions& o) {
+  if (!o.use_pyramid) return LevelSampling::None;
+  return o.level_interpolation == terrain::Interpolation::Bilinear ? LevelSampling::Bilinear : LevelSampling::BSpline;
+}
+
+void set_level_sampling(MarchOptions& o, LevelSampling sampling) {
+  o.use_pyramid = sampling != LevelSampling::None;
+  o.level_interpolation =
+      sampling == LevelSampling::Bilinear ? terrain::Interpolation::Bilinear : terrain::Interpolation::CubicBSpline;
+}
+
+std::string_view level_sampling_name(LevelSampling sampling) {
+  switch (sampling) {
+    case LevelSampling::BSpline: return "bspline";
+    case LevelSampling::Bilinear: return "bilinear";
+    case LevelSampling::None: return "none";
+  }
+  return "?";
+}
+
+std::optional<LevelSampling> parse_level_sampling(std::string_view name) {
+  for (LevelSampling s : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None})
+    if (name == level_sampling_name(s)) return s;
+  return std::nullopt;
+}
+
+std::string_view horizon_max_name(bool smooth_max) { return smooth_max ? "smooth" : "plain"; }
+
 double resolved_max_distance(const terrain::HeightField& field, const MarchOptions& o) {
   return o.max_distance_m > 0.0 ? o.max_distance_m : dem_extent(field);
 }
@@ -72,13 +100,14 @@ HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOpt
   if (options_.use_pyramid) pyramid_.build(field_, march_pyramid_options(options_));
   // The bound grows with the maximum, so the largest per-level bound is the bound of all.
   z_bound_ = options_.use_pyramid ? -std::numeric_limits<double>::infinity() : march_exit_height_bound(field_.heights);
+  const bool bilinear = options_.level_interpolation == terrain::Interpolation::Bilinear;
   for (int l = 0; options_.use_pyramid && l < pyramid_.levels(); ++l)
-    z_bound_ = std::max(z_bound_, march_exit_height_bound(pyramid_.level(l).coeffs));
+    z_bound_ = std::max(z_bound_, march_exit_height_bound(bilinear ? pyramid_.level(l).samples : pyramid_.level(l).coeffs));
 }
 
 double HorizonMarcher::height_at(int step, GridPoint p) const {
   if (!options_.use_pyramid) return bilinear_height(field_, p);
-  return pyramid_.sample(schedule_.levels[step], p.x, p.y, terrain::Interpolation::CubicBSpline);
+  return pyramid_.sample(schedule_.levels[step], p.x, p.y, options_.level_interpolation);
 }
 
 double HorizonMarcher::max_elevation(int i, int j, Heading u, bool early_exit, int* steps_marched) const {

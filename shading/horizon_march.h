@@ -25,7 +25,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace skylit::shading {
@@ -38,8 +40,22 @@ struct MarchOptions {
   double max_distance_m = 0.0;  // D; 0 = the DEM extent (diagonal)
   bool smooth_max = true;       // B-spline max of blocking angles; false = plain max
   bool use_pyramid = true;      // false: every step samples level 0 bilinearly
+  // How a step reads its pyramid level: the cubic B-spline through the level's samples
+  // (NS09; 16 coefficients) or bilinear between them (4 samples; docs/accuracy.md).
+  terrain::Interpolation level_interpolation = terrain::Interpolation::CubicBSpline;
   EarthCurvature curvature;     // on by default
 };
+
+// How a step reads heights, as `skylit shade --levels` and the bench name it:
+// the pyramid level by cubic B-spline ("bspline", NS09) or bilinearly ("bilinear"), or
+// level 0 bilinearly with no pyramid ("none").
+enum class LevelSampling { BSpline, Bilinear, None };
+LevelSampling level_sampling(const MarchOptions& options);
+void set_level_sampling(MarchOptions& options, LevelSampling sampling);
+std::string_view level_sampling_name(LevelSampling sampling);
+std::optional<LevelSampling> parse_level_sampling(std::string_view name);
+// "smooth" (B-spline max, NS09 eq. 17) or "plain", as `--horizon-max` names them.
+std::string_view horizon_max_name(bool smooth_max);
 
 // Throws std::invalid_argument for W < 1, k_v < 1, n_v < 0, D < 0, non-finite values.
 void validate(const MarchOptions& options);

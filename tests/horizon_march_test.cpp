@@ -124,10 +124,25 @@ TEST(HorizonMarchAccuracy, TiltedPlaneAwayFromTheEdges) {
   const auto f = test::tilted_plane(129, 1.0, s);
   MarchOptions o = flat_earth();
   o.max_distance_m = 24.0;  // keep every sample's prefilter support inside the grid
-  const HorizonMarcher m(f, o);
-  const auto sigma = march_horizons(m, 64, 64, 32);
-  EXPECT_NEAR(sigma[8], s, 2e-3);  // uphill (east)
-  EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, 64, 64)), (1 + std::cos(s)) / 2, 1e-3);
+  // Every way of reading heights reproduces a plane (the prefilter and both interpolants do).
+  for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
+    set_level_sampling(o, sampling);
+    const HorizonMarcher m(f, o);
+    const auto sigma = march_horizons(m, 64, 64, 32);
+    EXPECT_NEAR(sigma[8], s, 2e-3) << level_sampling_name(sampling);  // uphill (east)
+    EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, 64, 64)), (1 + std::cos(s)) / 2, 1e-3)
+        << level_sampling_name(sampling);
+  }
+}
+
+TEST(HorizonMarch, LevelSamplingNamesRoundTrip) {
+  for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
+    EXPECT_EQ(parse_level_sampling(level_sampling_name(sampling)), sampling);
+    MarchOptions o;
+    set_level_sampling(o, sampling);
+    EXPECT_EQ(level_sampling(o), sampling);
+  }
+  EXPECT_FALSE(parse_level_sampling("bicubic").has_value());
 }
 
 TEST(HorizonMarchAccuracy, CircularPitCentre) {
@@ -210,9 +225,6 @@ TEST(HorizonMarch, MaxDistanceIsHonoured) {
   EXPECT_NEAR(HorizonMarcher(f, o).max_elevation(122, 100, west), std::atan(0.5), 1e-12);
 }
 
-// The early exit (MarchExitSlack) must return exactly what the full march returns, on
-// scenes where it fires (pit, wall, plane, rough ground) and where it cannot (flat), for
-// both maxima, with and without the pyramid, and save steps somewhere.
 // The exit's height bound: above the largest height, NaN (nodata) skipped, and no exit
 // (+inf) where there is no height to bound.
 TEST(HorizonMarch, ExitHeightBoundSkipsNodataAndNeverUndercuts) {
@@ -226,6 +238,9 @@ TEST(HorizonMarch, ExitHeightBoundSkipsNodataAndNeverUndercuts) {
   EXPECT_EQ(shading::march_exit_height_bound(std::span<const float>()), std::numeric_limits<double>::infinity());
 }
 
+// The early exit (MarchExitSlack) must return exactly what the full march returns, on
+// scenes where it fires (pit, wall, plane, rough ground) and where it cannot (flat), for
+// both maxima and every level sampling, and save steps somewhere.
 TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
   std::vector<terrain::HeightField> scenes;
   scenes.push_back(test::radial_pit(65, 2.0, 6, 20, 15));
@@ -239,9 +254,10 @@ TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
   long full_steps = 0, exit_steps = 0;
   for (const auto& f : scenes)
     for (bool smooth : {true, false})
-      for (bool pyramid : {true, false}) {
+      for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
         MarchOptions o;
-        o.smooth_max = smooth, o.use_pyramid = pyramid;
+        o.smooth_max = smooth;
+        set_level_sampling(o, sampling);
         const HorizonMarcher m(f, o);
         for (int j = 0; j < f.height; j += 3)
           for (int i = 0; i < f.width; i += 3)

@@ -123,6 +123,10 @@ void validate_options(Product product, const shading::ProductOptions& o) {
   if (shading::uses_lighting(product, o)) shading::validate(*o.lighting);
 }
 
+bool bilinear_levels(const shading::MarchOptions& o) {
+  return o.level_interpolation == terrain::Interpolation::Bilinear;
+}
+
 // Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.
 bool sun_lit(Product product, const shading::ProductOptions& o) {
   return shading::uses_lighting(product, o) && sky::luminance(o.lighting->sun.dni) > 0.0;
@@ -255,6 +259,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   } else {
     march.set("SMOOTH_MAX", options.march.smooth_max ? 1 : 0)
         .set("USE_PYRAMID", options.march.use_pyramid ? 1 : 0)
+        .set("LEVEL_BILINEAR", bilinear_levels(options.march) ? 1 : 0)
         .set("SCHEDULE_BINDING", kSchedule)
         .set("MAX_STEPS", kMaxMarchSteps)
         .set("COEFFS_BINDING", kCoeffs)
@@ -373,7 +378,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     first_distance = steps.distances.front();
     if (k.pyramid) {
       const auto pyramid_start = Clock::now();
-      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march));
+      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march),
+                                           !bilinear_levels(mOptions.march));
       z_bound = static_cast<float>(shading::march_exit_height_bound(k.pyramid->max_coeff()));
       glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
       t.pyramid_ms = ms_since(pyramid_start);

@@ -74,7 +74,8 @@ GpuPyramid::GpuPyramid()
     : mFilter(ComputeProgram::from_embedded("pyramid_filter.comp", filter_defines())),
       mSolve(ComputeProgram::from_embedded("pyramid_coeffs.comp", solve_defines())) {}
 
-std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options) {
+std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
+                              bool coefficients) {
   if (width < 1 || height < 1) throw std::invalid_argument("GPU pyramid: empty height field");
   if (heights.size_bytes() < static_cast<std::size_t>(width) * height * sizeof(float))
     throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
@@ -160,7 +161,8 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       mFilter.dispatch_covering(s.width, s.height);
       mCoeffs.bind_storage(kCoeffs);
     }
-    // Coefficients: rows, then columns.
+    // Coefficients: rows, then columns (without `coefficients`: the column pass's max only).
+    mSolve.set_uniform("solve", coefficients ? 1 : 0);
     mSolve.set_uniform("offset", offset);
     mSolve.set_uniform("lines", s.height);
     mSolve.set_uniform("n", s.width);
@@ -168,7 +170,7 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     mSolve.set_uniform("elem_stride", 1);
     mSolve.set_uniform("factor_base", t.factors_x);
     mSolve.set_uniform("track_max", 0);
-    mSolve.dispatch_covering(s.height);
+    if (coefficients) mSolve.dispatch_covering(s.height);
     mSolve.set_uniform("lines", s.width);
     mSolve.set_uniform("n", s.height);
     mSolve.set_uniform("line_stride", 1);

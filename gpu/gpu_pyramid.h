@@ -30,19 +30,21 @@ class GpuPyramid {
   GpuPyramid();
 
   // Builds every level of the pyramid of the width × height field whose level-0
-  // heights (row-major float32) are in `heights`. Geometry tables and buffers are
+  // heights (row-major float32) are in `heights`: the levels' B-spline coefficients, or
+  // with `coefficients` false their samples (for bilinear sampling, no solve). Geometry tables and buffers are
   // (re)made only when the size or options change. Returns the bytes uploaded (the
   // tables, or 0 when they were kept). Throws std::invalid_argument for a bad size or
   // options, std::runtime_error when the coefficients exceed the storage-buffer limit.
-  std::size_t build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options);
+  std::size_t build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
+                    bool coefficients = true);
 
   int levels() const { return static_cast<int>(mShapes.size()); }
   const terrain::LevelShape& shape(int l) const { return mShapes.at(l); }
   std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l
   const Buffer& coeffs() const { return mCoeffs; }
-  // The largest coefficient of all levels (4 bytes read back; NaN if any is NaN).
+  // The largest value (coefficient or sample) of all levels (4 bytes read back; NaN if any is NaN).
   float max_coeff() const;
-  // Level l's coefficients, downloaded (tests).
+  // Level l's coefficients (or samples), downloaded (tests).
   std::vector<float> download_level(int l) const;
 
  private:

@@ -18,6 +18,8 @@ layout(std430, binding = WEIGHTS_BINDING) readonly buffer Weights { float weight
 // the horizon march's early-exit bound (horizon_march.comp z_bound).
 layout(std430, binding = MAX_BINDING) buffer MaxCoeff { uint max_key; };
 uniform int track_max;
+// 0: leave the line as it is (a pyramid of samples, sampled bilinearly: only the max).
+uniform int solve;
 
 uniform int lines;        // rows (axis 0) or columns (axis 1) to solve
 uniform int n;            // values per line
@@ -26,10 +28,24 @@ uniform int line_stride;  // index step between lines
 uniform int elem_stride;  // index step along a line
 uniform int factor_base;  // pivot table's first entry in weights[]
 
+// Float order as uint order: negatives reversed, below positives.
+void atomicMaxFloat(float v) {
+  uint u = floatBitsToUint(v);
+  atomicMax(max_key, (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u);
+}
+
 void main() {
   int k = int(gl_GlobalInvocationID.x);
   if (k >= lines) return;
   int base = offset + k * line_stride;
+  if (solve == 0) {
+    if (track_max != 0) {
+      float top = coeffs[base];
+      for (int q = 1; q < n; ++q) top = max(top, coeffs[base + q * elem_stride]);
+      atomicMaxFloat(top);
+    }
+    return;
+  }
   float d = coeffs[base] / weights[factor_base];
   coeffs[base] = d;
   for (int q = 1; q < n; ++q) {
@@ -42,8 +58,5 @@ void main() {
     coeffs[base + q * elem_stride] = c;
     top = max(top, c);
   }
-  if (track_max != 0) {  // float order as uint order: negatives reversed, below positives
-    uint u = floatBitsToUint(top);
-    atomicMax(max_key, (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u);
-  }
+  if (track_max != 0) atomicMaxFloat(top);
 }

@@ -146,8 +146,8 @@ TEST_F(GpuProductsTest, AllProductsMatchReferenceOnSyntheticAndRealDem) {
   if (!have_dem) std::cout << "shared/dem/cascades_skykomish_srtm1_4326.tif missing: real DEM not compared\n";
 }
 
-// The march's other settings: plain max, no pyramid (bilinear level 0), no curvature,
-// a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
+// The march's other settings: plain max, no pyramid (bilinear level 0), bilinear
+// pyramid levels, no curvature, a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
 // albedo and exposure.
 TEST_F(GpuProductsTest, MarchAndShadingVariants) {
   terrain::SyntheticOptions so;
@@ -164,6 +164,11 @@ TEST_F(GpuProductsTest, MarchAndShadingVariants) {
   o.march.use_pyramid = false;
   o.march.max_distance_m = 1000.0;  // not 900 m: see the header comment
   expect_product_matches(field, Product::Skyview, o, "no pyramid, D 1000 m");
+  o = default_options();
+  o.march.level_interpolation = terrain::Interpolation::Bilinear;
+  expect_product_matches(field, Product::Horizon, o, "bilinear levels");
+  o.march.smooth_max = false;
+  expect_product_matches(field, Product::Svf, o, "bilinear levels, plain max");
   o = default_options();
   o.march.azimuths = 12;
   o.shaded.sh_order = 3;

@@ -19,9 +19,13 @@ const std::vector<int> kShOrders = {2, 3, 4};
 const std::vector<int> kSubsamples = {4, 2, 1};  // cheapest first, like the others
 using Wedge = sh::WedgeInterpolation;
 const std::vector<Wedge> kWedges = {Wedge::Linear, Wedge::BSpline};
+using Levels = shading::LevelSampling;
+const std::vector<Levels> kLevels = {Levels::None, Levels::Bilinear, Levels::BSpline};
+const std::vector<bool> kSmoothMax = {false, true};
 
-BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge) {
-  return {w, k_v, o_v, n, 2 * n, s, wedge, std::nullopt};
+BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge, Levels levels = Levels::BSpline,
+                          bool smooth_max = true) {
+  return {w, k_v, o_v, n, 2 * n, s, wedge, levels, smooth_max, std::nullopt};
 }
 
 // Read back through apply_quality, so that every knob a preset sets is honoured.
@@ -29,7 +33,7 @@ BenchSetting preset_setting(shading::Quality q) {
   shading::ProductOptions o;
   shading::apply_quality(q, o);
   return {o.march.azimuths, o.march.k_v, o.march.level_offset, o.shaded.sh_order, o.shaded.nlp_order,
-          o.subsample, o.shaded.wedge, q};
+          o.subsample, o.shaded.wedge, shading::level_sampling(o.march), o.march.smooth_max, q};
 }
 
 // Appends s unless an equal setting is already there.
@@ -39,27 +43,32 @@ void add_unique(std::vector<BenchSetting>& list, const BenchSetting& s) {
 
 BenchSetting lowest() {
   return make_setting(kAzimuths.front(), kKv.front(), kLevelOffsets.front(), kShOrders.front(), kSubsamples.front(),
-                      kWedges.front());
+                      kWedges.front(), kLevels.front(), kSmoothMax.front());
 }
 BenchSetting highest() {
   return make_setting(kAzimuths.back(), kKv.back(), kLevelOffsets.back(), kShOrders.back(), kSubsamples.back(),
-                      kWedges.back());
+                      kWedges.back(), kLevels.back(), kSmoothMax.back());
 }
 
 std::vector<BenchSetting> default_sweep() {
   const BenchSetting d = preset_setting(shading::Quality::Default);
   std::vector<BenchSetting> list = {lowest()};
-  auto around = [&](BenchSetting s) {  // d with one knob changed; N = 2n as in the grid
+  // d with one knob changed; N = 2n as in the grid.
+  auto around = [&](auto change) {
+    BenchSetting s = d;
+    change(s);
     s.nlp_order = 2 * s.sh_order;
     s.preset.reset();
     add_unique(list, s);
   };
-  for (int w : kAzimuths) around({w, d.k_v, d.level_offset, d.sh_order, 0, d.subsample, d.wedge, {}});
-  for (int k : kKv) around({d.azimuths, k, d.level_offset, d.sh_order, 0, d.subsample, d.wedge, {}});
-  for (double o : kLevelOffsets) around({d.azimuths, d.k_v, o, d.sh_order, 0, d.subsample, d.wedge, {}});
-  for (int n : kShOrders) around({d.azimuths, d.k_v, d.level_offset, n, 0, d.subsample, d.wedge, {}});
-  for (int s : kSubsamples) around({d.azimuths, d.k_v, d.level_offset, d.sh_order, 0, s, d.wedge, {}});
-  for (Wedge e : kWedges) around({d.azimuths, d.k_v, d.level_offset, d.sh_order, 0, d.subsample, e, {}});
+  for (int w : kAzimuths) around([&](BenchSetting& s) { s.azimuths = w; });
+  for (int k : kKv) around([&](BenchSetting& s) { s.k_v = k; });
+  for (double o : kLevelOffsets) around([&](BenchSetting& s) { s.level_offset = o; });
+  for (int n : kShOrders) around([&](BenchSetting& s) { s.sh_order = n; });
+  for (int sub : kSubsamples) around([&](BenchSetting& s) { s.subsample = sub; });
+  for (Wedge e : kWedges) around([&](BenchSetting& s) { s.wedge = e; });
+  for (Levels l : kLevels) around([&](BenchSetting& s) { s.levels = l; });
+  for (bool m : kSmoothMax) around([&](BenchSetting& s) { s.smooth_max = m; });
   add_unique(list, highest());
   return list;
 }
@@ -72,6 +81,13 @@ std::vector<BenchSetting> full_sweep() {
         for (int n : kShOrders)
           for (int s : kSubsamples)
             for (Wedge e : kWedges) list.push_back(make_setting(w, k, o, n, s, e));
+  // The march knobs crossed with each other at the default n, s and wedge.
+  const BenchSetting d = preset_setting(shading::Quality::Default);
+  for (int w : kAzimuths)
+    for (int k : kKv)
+      for (double o : kLevelOffsets)
+        for (Levels l : kLevels)
+          for (bool m : kSmoothMax) add_unique(list, make_setting(w, k, o, d.sh_order, d.subsample, d.wedge, l, m));
   return list;
 }
 
@@ -100,6 +116,8 @@ std::string BenchSetting::label() const {
   if (nlp_order != 2 * sh_order) s << " N" << nlp_order;
   if (subsample != 1) s << " s" << subsample;
   if (wedge == sh::WedgeInterpolation::BSpline) s << " bspl";
+  if (levels != shading::LevelSampling::BSpline) s << ' ' << shading::level_sampling_name(levels);
+  if (!smooth_max) s << ' ' << shading::horizon_max_name(false);
   return s.str();
 }
 
@@ -133,6 +151,8 @@ shading::ProductOptions options_for(const BenchSetting& s, unsigned threads) {
   o.shaded.sh_order = s.sh_order;
   o.shaded.nlp_order = s.nlp_order;
   o.shaded.wedge = s.wedge;
+  shading::set_level_sampling(o.march, s.levels);
+  o.march.smooth_max = s.smooth_max;
   o.subsample = s.subsample;
   o.threads = threads;
   return o;

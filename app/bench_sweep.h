@@ -3,9 +3,11 @@
 //
 // Swept (everything ProductOptions exposes that trades speed for accuracy):
 // azimuths W, pyramid levels per halving k_v, level offset o_v, SH order n (with NLP
-// order N = 2n, DESIGN.md step 4), horizon sub-sampling s and wedge interpolation.
+// order N = 2n, DESIGN.md step 4), horizon sub-sampling s, wedge interpolation, how
+// steps read heights (shading::LevelSampling) and the smooth or plain horizon maximum.
 #pragma once
 
+#include "shading/horizon_march.h"
 #include "shading/products.h"
 #include "shading/quality.h"
 #include "shading/wedge.h"
@@ -26,15 +28,20 @@ struct BenchSetting {
   int nlp_order = 0;       // N: 2n in the sweeps, the preset's own N for presets
   int subsample = 1;       // s: horizons marched at every s-th texel
   sh::WedgeInterpolation wedge = sh::WedgeInterpolation::Linear;
+  shading::LevelSampling levels = shading::LevelSampling::BSpline;
+  bool smooth_max = true;
   std::optional<shading::Quality> preset;  // the --quality preset this setting equals
 
   bool same_march(const BenchSetting& o) const {
-    return azimuths == o.azimuths && k_v == o.k_v && level_offset == o.level_offset && subsample == o.subsample;
+    return azimuths == o.azimuths && k_v == o.k_v && level_offset == o.level_offset && subsample == o.subsample &&
+           levels == o.levels && smooth_max == o.smooth_max;
   }
   bool operator==(const BenchSetting& o) const {
     return same_march(o) && sh_order == o.sh_order && nlp_order == o.nlp_order && wedge == o.wedge;
   }
-  std::string label() const;  // "W32 kv4 o3 n4", plus " s2" / " bspl" where not 1 / linear
+  // "W32 kv4 o3 n4", plus " s2" / " bspl" / " bilinear" / " plain" where not 1 / linear /
+  // bspline / smooth.
+  std::string label() const;
 };
 
 // "linear" or "bspline", as `skylit shade --wedge` spells them.
@@ -42,8 +49,9 @@ std::string_view wedge_name(sh::WedgeInterpolation w);
 
 // Names accepted by --sweep: "smoke" (the lowest, default and highest setting, for
 // tests), "default" (one knob at a time around the library defaults, the two extreme
-// corners and the presets: minutes at 128² on 2 cores), "full" (every combination
-// plus the presets: 648+, for GPU machines). Settings equal to a preset carry it.
+// corners and the presets: minutes at 128² on 2 cores), "full" (every combination of
+// W, k_v, o_v, n, s and wedge, plus every march (W, k_v, o_v, levels, max) at the
+// default n, s and wedge, plus the presets: 840+, for GPU machines). Settings equal to a preset carry it.
 std::vector<std::string> sweep_names();
 // Throws std::invalid_argument naming the valid sweeps.
 std::vector<BenchSetting> sweep_settings(std::string_view name);

@@ -66,7 +66,9 @@ class ReferenceSource final : public TimingSource {
 // Options that give the same compiled pipeline: the bench varies only these fields.
 bool same_pipeline_options(const shading::ProductOptions& a, const shading::ProductOptions& b) {
   return a.exact == b.exact && a.march.azimuths == b.march.azimuths && a.march.k_v == b.march.k_v &&
-         a.march.level_offset == b.march.level_offset && a.shaded.sh_order == b.shaded.sh_order &&
+         a.march.level_offset == b.march.level_offset && a.march.use_pyramid == b.march.use_pyramid &&
+         a.march.level_interpolation == b.march.level_interpolation && a.march.smooth_max == b.march.smooth_max &&
+         a.shaded.sh_order == b.shaded.sh_order &&
          a.shaded.nlp_order == b.shaded.nlp_order && a.shaded.wedge == b.shaded.wedge &&
          a.subsample == b.subsample && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
          a.exact_options.step_texels == b.exact_options.step_texels;

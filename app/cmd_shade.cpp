@@ -42,6 +42,8 @@ struct ShadeArgs {
   std::string quality = "default";
   std::string shading_mode = "table";
   std::string wedge = "linear";
+  std::string levels = "bspline";
+  std::string horizon_max = "smooth";
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -109,6 +111,13 @@ terrain::HeightField load_input(const ShadeArgs& a) {
   if (!a.quiet)
     for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
   return std::move(result.field);
+}
+
+std::vector<std::string> level_sampling_names() {
+  std::vector<std::string> names;
+  for (auto l : {shading::LevelSampling::BSpline, shading::LevelSampling::Bilinear, shading::LevelSampling::None})
+    names.emplace_back(shading::level_sampling_name(l));
+  return names;
 }
 
 int run_shade(const ShadeArgs& a) {
@@ -190,6 +199,15 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
   cmd->add_option("--max-distance", args->options.march.max_distance_m, "Maximum marching distance in metres (0: the DEM extent)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--levels", args->levels,
+                  "How march steps read the height pyramid: bspline (cubic B-spline, NS09) | bilinear (4 samples "
+                  "instead of 16) | none (no pyramid: level-0 heights, bilinear); docs/accuracy.md")
+      ->check(CLI::IsMember(level_sampling_names()))
+      ->capture_default_str();
+  cmd->add_option("--horizon-max", args->horizon_max,
+                  "Maximum of the blocking angles along a ray: smooth (B-spline through them, NS09) | plain")
+      ->check(CLI::IsMember({std::string(shading::horizon_max_name(true)), std::string(shading::horizon_max_name(false))}))
+      ->capture_default_str();
   cmd->add_option("--kv", args->options.march.k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
   cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
@@ -235,6 +253,8 @@ void add_shade_command(CLI::App& root, Action& run) {
     args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
     args->options.shaded.wedge =
         args->wedge == "bspline" ? sh::WedgeInterpolation::BSpline : sh::WedgeInterpolation::Linear;
+    shading::set_level_sampling(o.march, *shading::parse_level_sampling(args->levels));
+    o.march.smooth_max = args->horizon_max == shading::horizon_max_name(true);
     run = [args] { return run_shade(*args); };
   });
 }

@@ -66,7 +66,7 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   std::string header;
   std::getline(lines, header);
   EXPECT_EQ(header,
-            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,preset,clock,"
+            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,preset,clock,"
             "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status");
   const auto columns = split(header, ',');
   auto col = [&](const std::string& name) {

@@ -42,8 +42,8 @@ struct ShadeArgs {
   std::string quality = "default";
   std::string shading_mode = "table";
   std::string wedge = "linear";
-  std::string levels = "bspline";
-  std::string horizon_max = "smooth";
+  std::string levels{shading::level_sampling_name(shading::level_sampling(shading::MarchOptions{}))};
+  std::string horizon_max{shading::horizon_max_name(shading::MarchOptions{}.smooth_max)};
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -178,7 +178,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
   cmd->add_option("--quality", args->quality,
                   "Preset from the measured speed/error front: fast | default | high "
-                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--sh-order/--nlp-order win")
+                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--levels/--horizon-max/--sh-order/"
+                  "--nlp-order win")
       ->check(CLI::IsMember({"fast", "default", "high"}))
       ->capture_default_str();
   cmd->add_option("--shading-mode", args->shading_mode,
@@ -248,13 +249,15 @@ void add_shade_command(CLI::App& root, Action& run) {
     if (!cmd->count("--azimuths")) o.march.azimuths = preset.march.azimuths;
     if (!cmd->count("--kv")) o.march.k_v = preset.march.k_v;
     if (!cmd->count("--level-offset")) o.march.level_offset = preset.march.level_offset;
+    shading::set_level_sampling(o.march, cmd->count("--levels") ? *shading::parse_level_sampling(args->levels)
+                                                                 : shading::level_sampling(preset.march));
+    o.march.smooth_max =
+        cmd->count("--horizon-max") ? args->horizon_max == shading::horizon_max_name(true) : preset.march.smooth_max;
     if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
     if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
     args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
     args->options.shaded.wedge =
         args->wedge == "bspline" ? sh::WedgeInterpolation::BSpline : sh::WedgeInterpolation::Linear;
-    shading::set_level_sampling(o.march, *shading::parse_level_sampling(args->levels));
-    o.march.smooth_max = args->horizon_max == shading::horizon_max_name(true);
     run = [args] { return run_shade(*args); };
   });
 }

@@ -3,6 +3,7 @@
 // and why each preset sits where it does).
 #pragma once
 
+#include "shading/horizon_march.h"
 #include "shading/products.h"
 
 #include <optional>
@@ -18,11 +19,14 @@ std::vector<Quality> all_qualities();      // fastest first
 std::optional<Quality> parse_quality(std::string_view name);
 
 // The quality knobs a preset sets: horizon azimuths W, pyramid levels per halving k_v,
-// level offset o_v, SH order n and NLP order N of the shaded visibility.
+// level offset o_v, how steps read heights, the horizon maximum (smooth or plain), SH
+// order n and NLP order N of the shaded visibility.
 struct QualitySettings {
   int azimuths;
   int k_v;
   double level_offset;
+  LevelSampling levels;
+  bool smooth_max;
   int sh_order;
   int nlp_order;
 };

@@ -222,5 +222,15 @@ TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
   EXPECT_EQ(bands("--quality fast"), skylit::shading::quality_settings(skylit::shading::Quality::Fast).azimuths);
   EXPECT_EQ(bands("--quality high"), skylit::shading::quality_settings(skylit::shading::Quality::High).azimuths);
   EXPECT_EQ(bands("--quality fast --azimuths 8"), 8);
+  // The march knobs of a preset, and explicit flags over them (horizons in degrees).
+  auto values = [&](const std::string& extra) {
+    const std::string out = dir.file("v.tif");
+    EXPECT_EQ(run_skylit("shade " + in + " -o " + out + " -p horizon --overwrite -q " + extra, true).status, 0);
+    return read_output(out).v;
+  };
+  const auto fast = values("--quality fast");
+  EXPECT_EQ(fast, values("--azimuths 16 --levels bilinear --horizon-max plain"));
+  EXPECT_NE(fast, values("--quality fast --levels bspline --horizon-max smooth"));
+  EXPECT_EQ(values("--quality fast --levels bspline --horizon-max smooth"), values("--azimuths 16"));
   expect_clean_shade_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
 }

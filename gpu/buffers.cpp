@@ -22,13 +22,31 @@ GLenum pixel_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_RED 
 
 }  // namespace
 
-void check_storage_size(std::size_t bytes, const char* what) {
+void check_storage_size(std::size_t bytes, const char* what, std::size_t limit_bytes) {
   GLint64 max_block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-  if (bytes > static_cast<std::size_t>(max_block))
-    throw std::runtime_error(std::string(what) + " needs " + std::to_string(bytes) +
-                             " bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE " + std::to_string(max_block) +
+  const std::size_t gl_limit = static_cast<std::size_t>(max_block);
+  const bool lowered = limit_bytes != 0 && limit_bytes < gl_limit;
+  if (bytes > (lowered ? limit_bytes : gl_limit))
+    throw std::runtime_error(std::string(what) + " needs " + std::to_string(bytes) + " bytes, over " +
+                             (lowered ? "the binding limit " + std::to_string(limit_bytes) + " set below " : "") +
+                             "GL_MAX_SHADER_STORAGE_BLOCK_SIZE " + std::to_string(gl_limit) +
                              "; split the field into tiles");
+}
+
+void check_texture_buffer_size(std::size_t texels, const char* what) {
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  if (texels > static_cast<std::size_t>(max_texels))
+    throw std::runtime_error(std::string(what) + " needs " + std::to_string(texels) +
+                             " texels, over GL_MAX_TEXTURE_BUFFER_SIZE " + std::to_string(max_texels) +
+                             "; split the field into tiles");
+}
+
+std::size_t storage_offset_alignment() {
+  GLint alignment = 0;
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  return static_cast<std::size_t>(std::max(alignment, 1));
 }
 
 Buffer::Buffer(std::size_t size_bytes, const void* data) : mSize(size_bytes) {
@@ -78,6 +96,15 @@ void Buffer::fill_zero() {
 
 void Buffer::bind_storage(unsigned binding) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, mId);
+}
+
+void Buffer::bind_storage_range(unsigned binding, std::size_t offset, std::size_t bytes) const {
+  check_range(offset, bytes, mSize, "Buffer::bind_storage_range");
+  if (offset % storage_offset_alignment() != 0)
+    throw std::invalid_argument("Buffer::bind_storage_range: offset " + std::to_string(offset) +
+                                " is not a multiple of GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT");
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding, mId, static_cast<GLintptr>(offset),
+                    static_cast<GLsizeiptr>(bytes));
 }
 
 void Buffer::bind_uniform(unsigned binding) const {
@@ -147,12 +174,8 @@ void Texture2D::bind_image(unsigned unit, bool read, bool write) const {
 }
 
 BufferTexture::BufferTexture(const Buffer& values, TextureFormat format) {
-  GLint max_texels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  const std::size_t texels = values.size_bytes() / (sizeof(float) * (format == TextureFormat::R32F ? 1 : 4));
-  if (texels > static_cast<std::size_t>(max_texels))
-    throw std::runtime_error("BufferTexture: " + std::to_string(texels) + " texels exceed GL_MAX_TEXTURE_BUFFER_SIZE " +
-                             std::to_string(max_texels) + " (process in tiles)");
+  check_texture_buffer_size(values.size_bytes() / (sizeof(float) * (format == TextureFormat::R32F ? 1 : 4)),
+                            "BufferTexture");
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &mId);
   glTextureBuffer(mId, internal_format(format), values.id());
 }

@@ -10,8 +10,16 @@
 namespace skylit::gpu {
 
 // Throws std::runtime_error("<what> needs … bytes, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE …")
-// where one storage block would exceed the driver's limit (needs a current context).
-void check_storage_size(std::size_t bytes, const char* what);
+// where one storage block (one bound range) would exceed the driver's limit, or
+// `limit_bytes` where that is lower (0: the driver's; tests lower it). Needs a current context.
+void check_storage_size(std::size_t bytes, const char* what, std::size_t limit_bytes = 0);
+
+// Throws std::runtime_error("<what> needs … texels, over GL_MAX_TEXTURE_BUFFER_SIZE …")
+// where a buffer texture of that many texels would exceed the driver's limit.
+void check_texture_buffer_size(std::size_t texels, const char* what);
+
+// GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT: Buffer::bind_storage_range offsets are multiples of it.
+std::size_t storage_offset_alignment();
 
 // A buffer object usable as SSBO or UBO; contents can be rewritten and read back.
 class Buffer {
@@ -43,6 +51,10 @@ class Buffer {
   void fill_zero();
 
   void bind_storage(unsigned binding) const;  // layout(std430, binding = …) buffer
+  // Bytes [offset, offset + bytes) as the storage block at `binding`: the block-size
+  // limit applies to the range, not the buffer. offset: a multiple of
+  // storage_offset_alignment() (throws std::invalid_argument otherwise).
+  void bind_storage_range(unsigned binding, std::size_t offset, std::size_t bytes) const;
   void bind_uniform(unsigned binding) const;  // layout(std140, binding = …) uniform
 
  private:

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -70,9 +71,16 @@ int append_factors(int n, std::vector<float>& weights) {
 
 }  // namespace
 
-GpuPyramid::GpuPyramid()
+GpuPyramid::GpuPyramid(std::size_t max_binding_bytes)
     : mFilter(ComputeProgram::from_embedded("pyramid_filter.comp", filter_defines())),
-      mSolve(ComputeProgram::from_embedded("pyramid_coeffs.comp", solve_defines())) {}
+      mSolve(ComputeProgram::from_embedded("pyramid_coeffs.comp", solve_defines())),
+      mMaxBindingBytes(max_binding_bytes) {}
+
+void GpuPyramid::bind_level(unsigned binding, int l) const {
+  const terrain::LevelShape& s = mShapes.at(l);
+  mCoeffs.bind_storage_range(binding, mOffsets.at(l) * sizeof(float),
+                             static_cast<std::size_t>(s.width) * s.height * sizeof(float));
+}
 
 std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
                               bool coefficients) {
@@ -83,15 +91,22 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
   const bool same = width == mWidth && height == mHeight && options.k_v == mOptions.k_v &&
                     options.levels == mOptions.levels && options.min_size == mOptions.min_size;
   if (!same) {  // geometry and tables for this size
+    mWidth = mHeight = 0;  // none kept if a check below throws
     const int n = terrain::pyramid_level_count(width, height, options);
     mShapes.clear();
     mOffsets.clear();
     mTables.assign(n, {});
     std::vector<std::int32_t> taps;
     std::vector<float> weights;
+    // Level starts are bound as range offsets: multiples of the alignment, in floats.
+    const std::size_t align = std::lcm(storage_offset_alignment(), sizeof(float)) / sizeof(float);
     std::size_t total = 0, scratch = 1;
     for (int l = 0; l < n; ++l) {
       const terrain::LevelShape s = terrain::pyramid_level_shape(width, height, options.k_v, l);
+      const std::size_t size = static_cast<std::size_t>(s.width) * s.height;
+      const std::string what = "GPU pipeline: level " + std::to_string(l) + " of the height pyramid";
+      check_storage_size(size * sizeof(float), what.c_str(), mMaxBindingBytes);
+      total = (total + align - 1) / align * align;
       mShapes.push_back(s);
       mOffsets.push_back(total);
       LevelTables& t = mTables[l];
@@ -102,14 +117,14 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       }
       t.factors_x = append_factors(s.width, weights);
       t.factors_y = append_factors(s.height, weights);
-      to_index(total, "the pyramid");  // the march indexes coefficients with int
-      total += static_cast<std::size_t>(s.width) * s.height;
+      total += size;
     }
     if (taps.empty()) taps.assign(4, 0);  // GL wants non-empty buffers bound
-    check_storage_size(total * sizeof(float), "GPU pipeline: the height pyramid");
-    check_storage_size(scratch * sizeof(float), "GPU pipeline: the pyramid's filter scratch");
+    to_index(total, "the pyramid");  // the march indexes coefficients with int
+    // The march reads all levels through one r32f buffer texture (gpu_pipeline.cpp).
+    check_texture_buffer_size(total, "GPU pipeline: the height pyramid");
+    check_storage_size(scratch * sizeof(float), "GPU pipeline: the pyramid's filter scratch", mMaxBindingBytes);
     check_storage_size(weights.size() * sizeof(float), "GPU pipeline: the pyramid's filter taps");
-    to_index(total + scratch, "the pyramid");
     mTaps = Buffer::from(std::span<const std::int32_t>(taps));
     mWeights = Buffer::from(std::span<const float>(weights));
     mCoeffs = Buffer(total * sizeof(float));
@@ -120,12 +135,11 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
 
   mTaps.bind_storage(kTaps);
   mWeights.bind_storage(kWeights);
-  mCoeffs.bind_storage(kCoeffs);
   const std::uint32_t no_key = 0;  // below every float's key
   mMaxKey = Buffer::from(std::span<const std::uint32_t>(&no_key, 1));
   mMaxKey.bind_storage(kMax);
   // Level 0 is the heights themselves.
-  glCopyNamedBufferSubData(heights.id(), mCoeffs.id(), 0, 0,
+  glCopyNamedBufferSubData(heights.id(), mCoeffs.id(), 0, static_cast<GLintptr>(mOffsets[0] * sizeof(float)),
                            static_cast<GLsizeiptr>(static_cast<std::size_t>(width) * height * sizeof(float)));
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   // The filter reads through buffer textures (pyramid_filter.comp says why).
@@ -134,7 +148,6 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
   for (int l = 0; l < levels(); ++l) {
     const terrain::LevelShape& s = mShapes[l];
     const LevelTables& t = mTables[l];
-    const int offset = static_cast<int>(mOffsets[l]);
     if (l > 0) {
       // x pass: every level-0 row → s.width values, into the scratch buffer.
       heights_tex.bind_sampler(kSrc);
@@ -142,28 +155,25 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       mFilter.set_uniform("axis", 0);
       mFilter.set_uniform("out_width", s.width);
       mFilter.set_uniform("out_height", height);
-      mFilter.set_uniform("dst_offset", 0);
       mFilter.set_uniform("n_in", width);
       mFilter.set_uniform("along_stride", 1);
       mFilter.set_uniform("across_stride", width);
       mFilter.set_uniform("tap_base", t.taps_x);
       mFilter.dispatch_covering(s.width, height);
-      // y pass: the scratch's columns → the level's samples, in its coefficients' slot.
+      // y pass: the scratch's columns → the level's samples, in its coefficients' range.
       scratch_tex.bind_sampler(kSrc);
-      mCoeffs.bind_storage(kDst);
+      bind_level(kDst, l);
       mFilter.set_uniform("axis", 1);
       mFilter.set_uniform("out_height", s.height);
-      mFilter.set_uniform("dst_offset", offset);
       mFilter.set_uniform("n_in", height);
       mFilter.set_uniform("along_stride", s.width);
       mFilter.set_uniform("across_stride", 1);
       mFilter.set_uniform("tap_base", t.taps_y);
       mFilter.dispatch_covering(s.width, s.height);
-      mCoeffs.bind_storage(kCoeffs);
     }
     // Coefficients: rows, then columns (without `coefficients`: the column pass's max only).
+    bind_level(kCoeffs, l);
     mSolve.set_uniform("solve", coefficients ? 1 : 0);
-    mSolve.set_uniform("offset", offset);
     mSolve.set_uniform("lines", s.height);
     mSolve.set_uniform("n", s.width);
     mSolve.set_uniform("line_stride", s.width);

@@ -11,8 +11,12 @@
 // the field's size alone, so they are uploaded once per size and kept.
 //
 // Output layout (what shaders/horizon_march.comp reads): every level's coefficients
-// row-major, levels back to back in one buffer; shape(l) and offset(l) give each level's
-// geometry (the march's step table carries it per step, gpu_pipeline.cpp).
+// row-major, levels one after another in one buffer, each starting at a multiple of
+// GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT (padding between them); shape(l) and
+// offset(l) give each level's geometry (the march's step table carries it per step,
+// gpu_pipeline.cpp). The kernels bind one level's range at a time, so the storage-block
+// size limit bounds a level, not the whole pyramid; the march reads the whole buffer
+// through one buffer texture, bounded by GL_MAX_TEXTURE_BUFFER_SIZE.
 #pragma once
 
 #include <cstddef>
@@ -27,20 +31,24 @@ namespace skylit::gpu {
 class GpuPyramid {
  public:
   // Compiles the two kernels. Needs a current GL 4.5 context for its whole life.
-  GpuPyramid();
+  // max_binding_bytes: the largest storage range a level or the filter scratch may be
+  // bound as, 0 for the driver's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (tests lower it to
+  // exercise the limit on small fields, whose tap tables it does not bound).
+  explicit GpuPyramid(std::size_t max_binding_bytes = 0);
 
   // Builds every level of the pyramid of the width × height field whose level-0
   // heights (row-major float32) are in `heights`: the levels' B-spline coefficients, or
-  // with `coefficients` false their samples (for bilinear sampling, no solve). Geometry tables and buffers are
-  // (re)made only when the size or options change. Returns the bytes uploaded (the
+  // with `coefficients` false their samples (for bilinear sampling, no solve). Geometry
+  // tables and buffers are (re)made only when the size or options change. Returns the bytes uploaded (the
   // tables, or 0 when they were kept). Throws std::invalid_argument for a bad size or
-  // options, std::runtime_error when the coefficients exceed the storage-buffer limit.
+  // options, std::runtime_error when one level exceeds the storage-block limit or all
+  // levels the buffer-texture limit.
   std::size_t build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
                     bool coefficients = true);
 
   int levels() const { return static_cast<int>(mShapes.size()); }
   const terrain::LevelShape& shape(int l) const { return mShapes.at(l); }
-  std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l
+  std::size_t offset(int l) const { return mOffsets.at(l); }  // first coefficient of level l (floats)
   const Buffer& coeffs() const { return mCoeffs; }
   // The largest value (coefficient or sample) of all levels (4 bytes read back; NaN if any is NaN).
   float max_coeff() const;
@@ -48,7 +56,11 @@ class GpuPyramid {
   std::vector<float> download_level(int l) const;
 
  private:
+  // Binds level l's coefficients as the storage block at `binding`.
+  void bind_level(unsigned binding, int l) const;
+
   ComputeProgram mFilter, mSolve;
+  std::size_t mMaxBindingBytes;
   int mWidth = 0, mHeight = 0;
   terrain::PyramidOptions mOptions;
   std::vector<terrain::LevelShape> mShapes;

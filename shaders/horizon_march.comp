@@ -40,8 +40,9 @@ layout(std140, binding = SCHEDULE_BINDING) uniform Schedule {
   vec4 step_geom[MAX_STEPS];
   ivec4 step_level[MAX_STEPS];
 };
-// B-spline coefficients (LEVEL_BILINEAR: the samples) of every level, row-major, levels
-// back to back.
+// B-spline coefficients (LEVEL_BILINEAR: the samples) of every level, row-major, each
+// level from its own offset (step_level[s].z; gpu/gpu_pyramid.h pads them to the SSBO
+// offset alignment).
 // With RAY_TEXTURES they (and heights, row spacings: horizon_ray.glsl) are read through
 // r32f buffer textures: on Mesa llvmpipe a texelFetch is a vector gather while an SSBO
 // load is a scalar loop over the SIMD lanes (about 30 % less march time measured there).

@@ -10,6 +10,7 @@
 // WEIGHTS_BINDING, MAX_BINDING, OFF_DIAGONAL (terrain::kBSplineOffDiagonal).
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = 1, local_size_z = 1) in;
 
+// The level's own range (the storage-block limit is per binding, not per buffer).
 layout(std430, binding = COEFFS_BINDING) buffer Coeffs { float coeffs[]; };
 // The factor tables live among the filter weights: pivot[0..n), then upper[0..n).
 layout(std430, binding = WEIGHTS_BINDING) readonly buffer Weights { float weights[]; };
@@ -23,7 +24,6 @@ uniform int solve;
 
 uniform int lines;        // rows (axis 0) or columns (axis 1) to solve
 uniform int n;            // values per line
-uniform int offset;       // the level's first coefficient
 uniform int line_stride;  // index step between lines
 uniform int elem_stride;  // index step along a line
 uniform int factor_base;  // pivot table's first entry in weights[]
@@ -37,7 +37,7 @@ void atomicMaxFloat(float v) {
 void main() {
   int k = int(gl_GlobalInvocationID.x);
   if (k >= lines) return;
-  int base = offset + k * line_stride;
+  int base = k * line_stride;
   if (solve == 0) {
     if (track_max != 0) {
       float top = coeffs[base];

@@ -6,7 +6,7 @@
 // with the taps (first, w) of terrain::reduction_axis_taps computed by C++ and uploaded.
 // Axis 0 (x): src = level-0 heights (n_in x rows), dst = the x-filtered rows.
 // Axis 1 (y): src = the x-filtered rows, dst = the level's samples (its coefficients'
-// slot, solved in place by pyramid_coeffs.comp).
+// range, bound alone, solved in place by pyramid_coeffs.comp).
 // The sum is taken around the centre tap's value: the weights sum to 1, so
 // c + sum w (h - c) is the same filter, and float32 rounding then scales with the
 // relief inside the window rather than with the heights' magnitude.
@@ -26,9 +26,8 @@ float src(int index) { return texelFetch(src_tex, index).r; }
 float weight(int index) { return texelFetch(weights_tex, index).r; }
 
 uniform int axis;           // 0: filter along x, 1: along y
-uniform int out_width;      // output grid (row-major at dst_offset)
+uniform int out_width;      // output grid (row-major from dst[0])
 uniform int out_height;
-uniform int dst_offset;
 uniform int n_in;           // inputs along the axis (clamp range)
 uniform int along_stride;   // src index step along the axis
 uniform int across_stride;  // src index step across it
@@ -49,5 +48,5 @@ void main() {
     for (int q = 0; q < t.y; ++q)
       acc += weight(t.z + q) * (src(base + clamp(t.x + q, 0, n_in - 1) * along_stride) - centre);
   }
-  dst[dst_offset + j * out_width + i] = centre + acc;
+  dst[j * out_width + i] = centre + acc;
 }

@@ -2,7 +2,8 @@
 // shaders/pyramid_coeffs.comp) against the CPU reference terrain::HeightPyramid: level
 // count and geometry, the level table the march kernel reads, and every level's
 // B-spline coefficients, for odd, even and non-square sizes, k_v = 1, 2, 4, on fields
-// with a nodata void filled by Laplace inpainting (as the DEM reader fills them).
+// with a nodata void filled by Laplace inpainting (as the DEM reader fills them); and
+// a pyramid larger than the storage-binding limit, each level bound as its own range.
 //
 // Tolerance: |Δc| ≤ kCoeffTol × the field's height range (hmax − hmin), every
 // coefficient of every level. The GPU filters in float32 around the window's centre
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +61,12 @@ double height_range(const terrain::HeightField& f) {
   return static_cast<double>(*hi) - *lo;
 }
 
+// Coefficients of all levels including the padding between them (the march's buffer texture).
+std::size_t total_floats(const GpuPyramid& gpu) {
+  const int last = gpu.levels() - 1;
+  return gpu.offset(last) + static_cast<std::size_t>(gpu.shape(last).width) * gpu.shape(last).height;
+}
+
 // Builds both pyramids and compares them; returns the largest |Δc| / range.
 double expect_pyramids_match(GpuPyramid& gpu, const terrain::HeightField& f, int k_v) {
   const terrain::PyramidOptions options{.k_v = k_v};
@@ -68,17 +76,21 @@ double expect_pyramids_match(GpuPyramid& gpu, const terrain::HeightField& f, int
   EXPECT_EQ(gpu.levels(), cpu.levels());
   const double range = height_range(f);
   double worst = 0.0;
-  std::size_t offset = 0;
+  // Each level starts at the first multiple of the binding alignment after the previous one.
+  const std::size_t align = storage_offset_alignment();
+  std::size_t end = 0;
   for (int l = 0; l < std::min(gpu.levels(), cpu.levels()); ++l) {
     SCOPED_TRACE("level " + std::to_string(l));
     const terrain::PyramidLevel& lv = cpu.level(l);
     // The geometry the march's step table takes from it (gpu_pipeline.cpp).
     EXPECT_EQ(gpu.shape(l).width, lv.width);
     EXPECT_EQ(gpu.shape(l).height, lv.height);
-    EXPECT_EQ(gpu.offset(l), offset);
+    EXPECT_EQ(gpu.offset(l) * sizeof(float) % align, 0u);
+    EXPECT_GE(gpu.offset(l), end);
+    EXPECT_LT((gpu.offset(l) - end) * sizeof(float), align);
     EXPECT_EQ(gpu.shape(l).step_x, lv.step_x);
     EXPECT_EQ(gpu.shape(l).step_y, lv.step_y);
-    offset += lv.coeffs.size();
+    end = gpu.offset(l) + lv.coeffs.size();
     const std::vector<float> c = gpu.download_level(l);
     if (c.size() != lv.coeffs.size()) {
       ADD_FAILURE() << "level sizes differ";
@@ -136,6 +148,34 @@ TEST_F(GpuPyramidTest, TablesAreKeptForTheSameSize) {
       ASSERT_NEAR(c[k], cpu.level(l).coeffs[k], kCoeffTol * height_range(b)) << "level " << l;
   }
   EXPECT_GT(gpu.build(ha, a.width, a.height, terrain::PyramidOptions{.k_v = 2}), 0u);  // new options: new tables
+}
+
+TEST_F(GpuPyramidTest, BuildsAPyramidLargerThanTheBindingLimit) {
+  // The binding limit lowered to level 0's size: every level fits, all of them do not.
+  const terrain::HeightField f = void_filled_field(67, 45, 5);
+  const std::size_t limit = f.heights.size() * sizeof(float);
+  GpuPyramid gpu(limit);
+  const double worst = expect_pyramids_match(gpu, f, 4);
+  EXPECT_GT(total_floats(gpu) * sizeof(float), 2 * limit);
+  std::cout << "pyramid of " << total_floats(gpu) * sizeof(float) << " B under a " << limit
+            << " B binding limit (offset alignment " << storage_offset_alignment()
+            << " B): max |Δc| / range = " << worst << "\n";
+}
+
+TEST_F(GpuPyramidTest, ALevelOverTheBindingLimitThrows) {
+  const terrain::HeightField f = void_filled_field(67, 45, 5);
+  const std::size_t level0_bytes = f.heights.size() * sizeof(float);
+  GpuPyramid gpu(level0_bytes - sizeof(float));  // one float short of level 0
+  const Buffer heights = Buffer::from(std::span<const float>(f.heights));
+  try {
+    gpu.build(heights, f.width, f.height, terrain::PyramidOptions{.k_v = 4});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    const std::string expected = "level 0 of the height pyramid needs " + std::to_string(level0_bytes) + " bytes";
+    EXPECT_NE(what.find(expected), std::string::npos) << what;
+    EXPECT_NE(what.find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << what;
+  }
 }
 
 TEST_F(GpuPyramidTest, RejectsBadInput) {

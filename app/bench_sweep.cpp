@@ -23,8 +23,10 @@ using Levels = shading::LevelSampling;
 const std::vector<Levels> kLevels = {Levels::None, Levels::Bilinear, Levels::BSpline};
 const std::vector<bool> kSmoothMax = {false, true};
 
-BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge, Levels levels = Levels::BSpline,
-                          bool smooth_max = true) {
+// Level sampling and maximum default to the library's (MarchOptions).
+BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge,
+                          Levels levels = shading::level_sampling(shading::MarchOptions{}),
+                          bool smooth_max = shading::MarchOptions{}.smooth_max) {
   return {w, k_v, o_v, n, 2 * n, s, wedge, levels, smooth_max, std::nullopt};
 }
 
@@ -116,8 +118,9 @@ std::string BenchSetting::label() const {
   if (nlp_order != 2 * sh_order) s << " N" << nlp_order;
   if (subsample != 1) s << " s" << subsample;
   if (wedge == sh::WedgeInterpolation::BSpline) s << " bspl";
-  if (levels != shading::LevelSampling::BSpline) s << ' ' << shading::level_sampling_name(levels);
-  if (!smooth_max) s << ' ' << shading::horizon_max_name(false);
+  const shading::MarchOptions defaults;
+  if (levels != shading::level_sampling(defaults)) s << ' ' << shading::level_sampling_name(levels);
+  if (smooth_max != defaults.smooth_max) s << ' ' << shading::horizon_max_name(smooth_max);
   return s.str();
 }
 

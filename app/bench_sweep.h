@@ -28,8 +28,8 @@ struct BenchSetting {
   int nlp_order = 0;       // N: 2n in the sweeps, the preset's own N for presets
   int subsample = 1;       // s: horizons marched at every s-th texel
   sh::WedgeInterpolation wedge = sh::WedgeInterpolation::Linear;
-  shading::LevelSampling levels = shading::LevelSampling::BSpline;
-  bool smooth_max = true;
+  shading::LevelSampling levels = shading::level_sampling(shading::MarchOptions{});
+  bool smooth_max = shading::MarchOptions{}.smooth_max;
   std::optional<shading::Quality> preset;  // the --quality preset this setting equals
 
   bool same_march(const BenchSetting& o) const {
@@ -39,8 +39,8 @@ struct BenchSetting {
   bool operator==(const BenchSetting& o) const {
     return same_march(o) && sh_order == o.sh_order && nlp_order == o.nlp_order && wedge == o.wedge;
   }
-  // "W32 kv4 o3 n4", plus " s2" / " bspl" / " bilinear" / " plain" where not 1 / linear /
-  // bspline / smooth.
+  // "W32 kv4 o3 n4", plus " s2" / " bspl" where not 1 / linear, and the level sampling
+  // and horizon maximum where not the library defaults (" bspline", " smooth", ...).
   std::string label() const;
 };
 

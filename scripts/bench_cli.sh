@@ -32,6 +32,8 @@ time_runs "skylit shade ${size}² -p shaded (default quality, auto backend)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded.png" -p shaded -q --overwrite
 time_runs "skylit shade ${size}² -p shaded --subsample 2" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded2.png" -p shaded --subsample 2 -q --overwrite
+time_runs "skylit shade ${size}² -p shaded --quality fast" \
+  "$skylit" shade "$tmp/dem.tif" -o "$tmp/fast.png" -p shaded --quality fast -q --overwrite
 time_runs "skylit shade ${size}² -p shaded --quality fast --subsample 4" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded4.png" -p shaded --quality fast --subsample 4 -q --overwrite
 time_runs "gdaldem hillshade -multidirectional ${size}² (PNG)" \

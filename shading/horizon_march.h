@@ -38,11 +38,13 @@ struct MarchOptions {
   int levels = 0;               // n_v march steps; 0 = enough that t_0 ≤ one texel
   double level_offset = 3.0;    // o_v (NS09: 2; 3 measured 1/3 more accurate, docs/accuracy.md)
   double max_distance_m = 0.0;  // D; 0 = the DEM extent (diagonal)
-  bool smooth_max = true;       // B-spline max of blocking angles; false = plain max
+  // The defaults below are the measured front's (docs/quality-presets.md), not NS09's
+  // B-spline levels and smooth max: at 512² those cost 2× the time for more error.
+  bool smooth_max = false;      // true: B-spline max of the blocking angles (NS09 eq. 17)
   bool use_pyramid = true;      // false: every step samples level 0 bilinearly
-  // How a step reads its pyramid level: the cubic B-spline through the level's samples
-  // (NS09; 16 coefficients) or bilinear between them (4 samples; docs/accuracy.md).
-  terrain::Interpolation level_interpolation = terrain::Interpolation::CubicBSpline;
+  // How a step reads its pyramid level: bilinear between the level's samples (4 reads)
+  // or the cubic B-spline through them (NS09; 16 coefficients).
+  terrain::Interpolation level_interpolation = terrain::Interpolation::Bilinear;
   EarthCurvature curvature;     // on by default
 };
 

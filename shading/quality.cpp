@@ -31,18 +31,13 @@ std::optional<Quality> parse_quality(std::string_view name) {
 }
 
 QualitySettings quality_settings(Quality q) {
-  // Chosen from the front measured on the CPU reference at 128² and 256² and on the GPU
-  // front (llvmpipe, 256²; docs/quality-presets.md); an NVIDIA front is still to be
-  // measured with `skylit bench --backend gpu`.
+  // Chosen from the GPU front (llvmpipe, 256² and 512², docs/quality-presets.md); an
+  // NVIDIA front is still to be measured with `skylit bench --backend gpu`. Each preset
+  // changes one knob of the defaults:
   QualitySettings s = library_defaults();
   switch (q) {
     case Quality::Fast:
-      // Half the azimuths, 4 samples per step instead of 16, one atan per ray: 1/3 of the
-      // default's time at 256², skyview RMSE 10 % lower, shaded RMSE 1 % higher; it
-      // dominates the W16 B-spline setting on time and both errors.
-      s.azimuths = 16;
-      s.levels = LevelSampling::Bilinear;
-      s.smooth_max = false;
+      s.azimuths = 16;  // the knee: half the march for a few % more shaded RMSE
       break;
     case Quality::Default: break;
     case Quality::High:

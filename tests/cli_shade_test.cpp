@@ -231,6 +231,7 @@ TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
   const auto fast = values("--quality fast");
   EXPECT_EQ(fast, values("--azimuths 16 --levels bilinear --horizon-max plain"));
   EXPECT_NE(fast, values("--quality fast --levels bspline --horizon-max smooth"));
-  EXPECT_EQ(values("--quality fast --levels bspline --horizon-max smooth"), values("--azimuths 16"));
+  EXPECT_EQ(values("--quality fast --levels bspline --horizon-max smooth"),
+            values("--azimuths 16 --levels bspline --horizon-max smooth"));
   expect_clean_shade_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
 }

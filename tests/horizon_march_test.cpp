@@ -186,8 +186,8 @@ TEST(HorizonMarchAccuracy, ThinFeaturesFadeWithDistance) {
   ExactMarch exact;
   exact.curvature.enabled = false;
   EXPECT_NEAR(exact_max_elevation(f, 20, 20, east, exact), kPi / 4, 1e-12);
-  EXPECT_GT(marched, 0.1);  // measured 0.22 rad
-  EXPECT_LT(marched, 0.4);
+  EXPECT_GT(marched, 0.1);  // measured 0.42 rad (0.22 with B-spline levels and smooth max)
+  EXPECT_LT(marched, 0.6);
   MarchOptions sharp = flat_earth();
   sharp.use_pyramid = false;
   sharp.smooth_max = false;  // level 0, plain max: only the step spacing can miss it

@@ -94,29 +94,28 @@ struct Variant {
 };
 
 std::vector<Variant> variants() {
-  std::vector<Variant> v;
-  v.push_back({"default (W 32, k_v 4, o_v 3, B-spline max)", {}});
-  Variant plain{"plain max", {}};
-  plain.march.smooth_max = false;
-  v.push_back(plain);
-  Variant ov2{"o_v 2", {}};
-  ov2.march.level_offset = 2;
-  v.push_back(ov2);
-  Variant ov1{"o_v 1", {}};
-  ov1.march.level_offset = 1;
-  v.push_back(ov1);
-  Variant kv8{"k_v 8", {}};
-  kv8.march.k_v = 8;
-  v.push_back(kv8);
-  Variant w64{"W 64", {}};
-  w64.march.azimuths = 64;
-  v.push_back(w64);
-  Variant bilinear{"bilinear levels", {}};
-  bilinear.march.level_interpolation = terrain::Interpolation::Bilinear;
-  v.push_back(bilinear);
-  Variant flat{"no pyramid (level 0 bilinear)", {}};
-  flat.march.use_pyramid = false;
-  v.push_back(flat);
+  // NS09's march (B-spline levels, smooth max) and one change at a time from it, then
+  // the shipped default (bilinear levels, plain max: docs/quality-presets.md).
+  Variant ns09{"NS09 (W 32, k_v 4, o_v 3, B-spline levels, smooth max)", {}};
+  set_level_sampling(ns09.march, LevelSampling::BSpline);
+  ns09.march.smooth_max = true;
+  std::vector<Variant> v = {ns09};
+  auto from_ns09 = [&](const char* name, auto change) {
+    Variant x{name, ns09.march};
+    change(x.march);
+    v.push_back(x);
+  };
+  from_ns09("plain max", [](MarchOptions& m) { m.smooth_max = false; });
+  from_ns09("o_v 2", [](MarchOptions& m) { m.level_offset = 2; });
+  from_ns09("o_v 1", [](MarchOptions& m) { m.level_offset = 1; });
+  from_ns09("k_v 8", [](MarchOptions& m) { m.k_v = 8; });
+  from_ns09("W 64", [](MarchOptions& m) { m.azimuths = 64; });
+  from_ns09("bilinear levels", [](MarchOptions& m) { set_level_sampling(m, LevelSampling::Bilinear); });
+  from_ns09("no pyramid (level 0 bilinear)", [](MarchOptions& m) { set_level_sampling(m, LevelSampling::None); });
+  v.push_back({"**default**: bilinear levels, plain max", {}});
+  Variant flat_plain{"no pyramid, plain max", {}};
+  set_level_sampling(flat_plain.march, LevelSampling::None);
+  v.push_back(flat_plain);
   return v;
 }
 

@@ -3,7 +3,8 @@
 // count and geometry, the level table the march kernel reads, and every level's
 // B-spline coefficients, for odd, even and non-square sizes, k_v = 1, 2, 4, on fields
 // with a nodata void filled by Laplace inpainting (as the DEM reader fills them); and
-// a pyramid larger than the storage-binding limit, each level bound as its own range.
+// a pyramid larger than the storage-binding limit, each level bound as its own range;
+// and the pyramid of samples that bilinear levels read (no solve).
 //
 // Tolerance: |Δc| ≤ kCoeffTol × the field's height range (hmax − hmin), every
 // coefficient of every level. The GPU filters in float32 around the window's centre
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -119,6 +121,33 @@ TEST_F(GpuPyramidTest, CoefficientsMatchTheCpuPyramid) {
       const double worst = expect_pyramids_match(gpu, f, k_v);
       std::cout << s.w << "×" << s.h << " k_v " << k_v << ": max |Δc| / range = " << worst << "\n";
     }
+}
+
+// Without coefficients (bilinear levels): every level holds the CPU pyramid's filtered
+// samples, and the tracked maximum (the march's exit bound) is their largest.
+TEST_F(GpuPyramidTest, SamplesWithoutCoefficientsMatchTheCpuPyramid) {
+  GpuPyramid gpu;
+  const terrain::HeightField f = void_filled_field(67, 45, 5);
+  const terrain::PyramidOptions options{.k_v = 4};
+  const terrain::HeightPyramid cpu(f, options);
+  const Buffer heights = Buffer::from(std::span<const float>(f.heights));
+  gpu.build(heights, f.width, f.height, options, false);
+  ASSERT_EQ(gpu.levels(), cpu.levels());
+  const double range = height_range(f);
+  float top = -std::numeric_limits<float>::infinity();
+  for (int l = 0; l < gpu.levels(); ++l) {
+    const std::vector<float> v = gpu.download_level(l);
+    const std::vector<float>& want = cpu.level(l).samples;
+    ASSERT_EQ(v.size(), want.size()) << "level " << l;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      ASSERT_LE(std::abs(static_cast<double>(v[k]) - want[k]) / range, kCoeffTol) << "level " << l << " sample " << k;
+      top = std::max(top, v[k]);
+    }
+  }
+  EXPECT_EQ(gpu.max_coeff(), top);
+  // Built again with coefficients, level 1 differs from its samples (the solve ran).
+  gpu.build(heights, f.width, f.height, options, true);
+  EXPECT_NE(gpu.download_level(1), cpu.level(1).samples);
 }
 
 TEST_F(GpuPyramidTest, ConstantFieldStaysConstantAtEveryLevel) {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -187,6 +188,10 @@ bool gpu_supports(Product product, const shading::ProductOptions& options) {
 struct GpuProductPipeline::Impl {
   int azimuths = 0;
   std::optional<ComputeProgram> march;     // horizon_march.comp, or horizon_exact.comp with exact
+  // horizon_march.comp for fields whose rows share one spacing (projected grids): no
+  // per-step row-spacing fetches (5–10 % of the march on llvmpipe). Compiled at first use.
+  std::optional<ComputeProgram> march_one_dx;
+  GlslDefines march_defines;
   std::optional<ComputeProgram> products;  // surface_products.comp
   std::optional<ComputeProgram> sun;       // sun_shadow.comp: shadow, and lit products with a sun
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
@@ -270,6 +275,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("COARSE_SIGMA_BINDING", kCoarseSigma)
         .set("VALID_BINDING", kValid);
     k.march.emplace(ComputeProgram::from_embedded("horizon_march.comp", march));
+    k.march_defines = march;
     if (options.march.use_pyramid) {
       k.pyramid.emplace();
     } else {  // unused by the kernel; GL wants non-empty buffers bound
@@ -467,8 +473,16 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
 
   // Stage 2: the march. Stage 3: the product. Row chunks bound a dispatch's length.
-  const ComputeProgram& march = *k.march;
+  const bool one_dx = !mOptions.exact && std::adjacent_find(field.dx_per_row.begin(), field.dx_per_row.end(),
+                                                             std::not_equal_to<>()) == field.dx_per_row.end();
+  if (one_dx && !k.march_one_dx) {
+    GlslDefines d = k.march_defines;
+    d.set("ONE_DX", 1);
+    k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
+  }
+  const ComputeProgram& march = one_dx ? *k.march_one_dx : *k.march;
   set_grid_uniforms(march, field);
+  if (one_dx) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
   const ComputeProgram& products = *k.products;
   set_grid_uniforms(products, field);
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));

@@ -146,6 +146,22 @@ TEST_F(GpuProductsTest, AllProductsMatchReferenceOnSyntheticAndRealDem) {
   if (!have_dem) std::cout << "shared/dem/cascades_skykomish_srtm1_4326.tif missing: real DEM not compared\n";
 }
 
+// One pipeline, fields of one row spacing (the march variant without per-step spacing
+// fetches) and of per-row spacing (a geographic grid) in turn.
+TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
+  terrain::SyntheticOptions so;
+  so.width = 60;
+  so.height = 52;
+  so.seed = 5;
+  const HeightField projected = terrain::make_synthetic_terrain(so);
+  HeightField geographic = projected;
+  for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;  // like 37–39° N at 1″
+  const GpuProductPipeline pipeline(Product::Horizon, default_options());
+  expect_product_matches(pipeline, projected, "one dx");
+  expect_product_matches(pipeline, geographic, "per-row dx");
+  expect_product_matches(pipeline, projected, "one dx again");
+}
+
 // The march's other settings: plain max, no pyramid (bilinear level 0), bilinear
 // pyramid levels, no curvature, a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
 // albedo and exposure.

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -146,14 +147,19 @@ TEST_F(GpuProductsTest, AllProductsMatchReferenceOnSyntheticAndRealDem) {
   if (!have_dem) std::cout << "shared/dem/cascades_skykomish_srtm1_4326.tif missing: real DEM not compared\n";
 }
 
+// The built-in synthetic scene (30 m texels) at w × h.
+HeightField synthetic_scene(int w, int h, std::uint64_t seed) {
+  terrain::SyntheticOptions so;
+  so.width = w;
+  so.height = h;
+  so.seed = seed;
+  return terrain::make_synthetic_terrain(so);
+}
+
 // One pipeline, fields of one row spacing (the march variant without per-step spacing
 // fetches) and of per-row spacing (a geographic grid) in turn.
 TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
-  terrain::SyntheticOptions so;
-  so.width = 60;
-  so.height = 52;
-  so.seed = 5;
-  const HeightField projected = terrain::make_synthetic_terrain(so);
+  const HeightField projected = synthetic_scene(60, 52, 5);
   HeightField geographic = projected;
   for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;  // like 37–39° N at 1″
   const GpuProductPipeline pipeline(Product::Horizon, default_options());
@@ -166,11 +172,7 @@ TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
 // pyramid levels, no curvature, a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
 // albedo and exposure.
 TEST_F(GpuProductsTest, MarchAndShadingVariants) {
-  terrain::SyntheticOptions so;
-  so.width = 72;
-  so.height = 64;
-  so.seed = 11;
-  const HeightField field = terrain::make_synthetic_terrain(so);
+  const HeightField field = synthetic_scene(72, 64, 11);
   ProductOptions o = default_options();
   o.march.smooth_max = false;
   o.march.curvature.enabled = false;

@@ -115,8 +115,7 @@ terrain::HeightField load_input(const ShadeArgs& a) {
 
 std::vector<std::string> level_sampling_names() {
   std::vector<std::string> names;
-  for (auto l : {shading::LevelSampling::BSpline, shading::LevelSampling::Bilinear, shading::LevelSampling::None})
-    names.emplace_back(shading::level_sampling_name(l));
+  for (shading::LevelSampling l : shading::all_level_samplings()) names.emplace_back(shading::level_sampling_name(l));
   return names;
 }
 

@@ -125,7 +125,7 @@ void validate_options(Product product, const shading::ProductOptions& o) {
 }
 
 bool bilinear_levels(const shading::MarchOptions& o) {
-  return o.level_interpolation == terrain::Interpolation::Bilinear;
+  return shading::level_sampling(o) == shading::LevelSampling::Bilinear;
 }
 
 // Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.

@@ -29,6 +29,10 @@ void set_level_sampling(MarchOptions& o, LevelSampling sampling) {
       sampling == LevelSampling::Bilinear ? terrain::Interpolation::Bilinear : terrain::Interpolation::CubicBSpline;
 }
 
+std::vector<LevelSampling> all_level_samplings() {
+  return {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None};
+}
+
 std::string_view level_sampling_name(LevelSampling sampling) {
   switch (sampling) {
     case LevelSampling::BSpline: return "bspline";
@@ -39,7 +43,7 @@ std::string_view level_sampling_name(LevelSampling sampling) {
 }
 
 std::optional<LevelSampling> parse_level_sampling(std::string_view name) {
-  for (LevelSampling s : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None})
+  for (LevelSampling s : all_level_samplings())
     if (name == level_sampling_name(s)) return s;
   return std::nullopt;
 }
@@ -100,7 +104,7 @@ HorizonMarcher::HorizonMarcher(const terrain::HeightField& field, const MarchOpt
   if (options_.use_pyramid) pyramid_.build(field_, march_pyramid_options(options_));
   // The bound grows with the maximum, so the largest per-level bound is the bound of all.
   z_bound_ = options_.use_pyramid ? -std::numeric_limits<double>::infinity() : march_exit_height_bound(field_.heights);
-  const bool bilinear = options_.level_interpolation == terrain::Interpolation::Bilinear;
+  const bool bilinear = level_sampling(options_) == LevelSampling::Bilinear;  // reads samples, not coefficients
   for (int l = 0; options_.use_pyramid && l < pyramid_.levels(); ++l)
     z_bound_ = std::max(z_bound_, march_exit_height_bound(bilinear ? pyramid_.level(l).samples : pyramid_.level(l).coeffs));
 }

@@ -54,6 +54,7 @@ struct MarchOptions {
 enum class LevelSampling { BSpline, Bilinear, None };
 LevelSampling level_sampling(const MarchOptions& options);
 void set_level_sampling(MarchOptions& options, LevelSampling sampling);
+std::vector<LevelSampling> all_level_samplings();  // NS09's first
 std::string_view level_sampling_name(LevelSampling sampling);
 std::optional<LevelSampling> parse_level_sampling(std::string_view name);
 // "smooth" (B-spline max, NS09 eq. 17) or "plain", as `--horizon-max` names them.

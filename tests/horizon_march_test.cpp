@@ -125,7 +125,7 @@ TEST(HorizonMarchAccuracy, TiltedPlaneAwayFromTheEdges) {
   MarchOptions o = flat_earth();
   o.max_distance_m = 24.0;  // keep every sample's prefilter support inside the grid
   // Every way of reading heights reproduces a plane (the prefilter and both interpolants do).
-  for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
+  for (LevelSampling sampling : all_level_samplings()) {
     set_level_sampling(o, sampling);
     const HorizonMarcher m(f, o);
     const auto sigma = march_horizons(m, 64, 64, 32);
@@ -136,7 +136,7 @@ TEST(HorizonMarchAccuracy, TiltedPlaneAwayFromTheEdges) {
 }
 
 TEST(HorizonMarch, LevelSamplingNamesRoundTrip) {
-  for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
+  for (LevelSampling sampling : all_level_samplings()) {
     EXPECT_EQ(parse_level_sampling(level_sampling_name(sampling)), sampling);
     MarchOptions o;
     set_level_sampling(o, sampling);
@@ -254,7 +254,7 @@ TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
   long full_steps = 0, exit_steps = 0;
   for (const auto& f : scenes)
     for (bool smooth : {true, false})
-      for (LevelSampling sampling : {LevelSampling::BSpline, LevelSampling::Bilinear, LevelSampling::None}) {
+      for (LevelSampling sampling : all_level_samplings()) {
         MarchOptions o;
         o.smooth_max = smooth;
         set_level_sampling(o, sampling);

@@ -51,7 +51,8 @@ std::string_view wedge_name(sh::WedgeInterpolation w);
 // tests), "default" (one knob at a time around the library defaults, the two extreme
 // corners and the presets: minutes at 128² on 2 cores), "full" (every combination of
 // W, k_v, o_v, n, s and wedge, plus every march (W, k_v, o_v, levels, max) at the
-// default n, s and wedge, plus the presets: 840+, for GPU machines). Settings equal to a preset carry it.
+// default n, s and wedge, plus the presets: 828, for GPU machines). Settings equal to a preset
+// carry it.
 std::vector<std::string> sweep_names();
 // Throws std::invalid_argument naming the valid sweeps.
 std::vector<BenchSetting> sweep_settings(std::string_view name);

@@ -16,6 +16,18 @@ void validate(const MarchOptions& o) {
     throw std::invalid_argument("march: max distance must be ≥ 0 (0 = DEM extent)");
   if (o.curvature.enabled && !(o.curvature.radius_m > 0.0 && o.curvature.refraction_k < 1.0))
     throw std::invalid_argument("march: Earth radius must be > 0 and refraction k < 1");
+  if (o.sweep_near_steps < 0) throw std::invalid_argument("sweep: near steps must be ≥ 0");
+  if (o.sweep_lines < 1) throw std::invalid_argument("sweep: lines per texel must be ≥ 1");
+}
+
+std::string_view horizon_method_name(HorizonMethod method) {
+  return method == HorizonMethod::Sweep ? "sweep" : "march";
+}
+
+std::optional<HorizonMethod> parse_horizon_method(std::string_view name) {
+  for (HorizonMethod m : {HorizonMethod::March, HorizonMethod::Sweep})
+    if (name == horizon_method_name(m)) return m;
+  return std::nullopt;
 }
 
 LevelSampling level_sampling(const MarchOptions& o) {

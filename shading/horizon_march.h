@@ -32,6 +32,11 @@
 
 namespace skylit::shading {
 
+enum class HorizonMethod { March, Sweep };
+// "march" or "sweep", as `skylit shade --horizons` and the bench name them.
+std::string_view horizon_method_name(HorizonMethod method);
+std::optional<HorizonMethod> parse_horizon_method(std::string_view name);
+
 struct MarchOptions {
   int azimuths = 32;            // W
   int k_v = 4;                  // pyramid levels (and steps) per halving of resolution
@@ -46,6 +51,12 @@ struct MarchOptions {
   // or the cubic B-spline through them (NS09; 16 coefficients).
   terrain::Interpolation level_interpolation = terrain::Interpolation::Bilinear;
   EarthCurvature curvature;     // on by default
+  // How horizons are found: rays per texel over the pyramid ("march", the knobs above)
+  // or sweep lines holding convex hulls ("sweep", horizon_sweep.h, the knobs below),
+  // which marches instead where it does not apply (sweep_applicable).
+  HorizonMethod method = HorizonMethod::March;
+  int sweep_near_steps = 4;  // K: half-texel steps each texel takes along its own ray
+  int sweep_lines = 2;       // sweep lines per texel across the heading (1/Δc)
 };
 
 // How a step reads heights, as `skylit shade --levels` and the bench name it:
@@ -60,7 +71,8 @@ std::optional<LevelSampling> parse_level_sampling(std::string_view name);
 // "smooth" (B-spline max, NS09 eq. 17) or "plain", as `--horizon-max` names them.
 std::string_view horizon_max_name(bool smooth_max);
 
-// Throws std::invalid_argument for W < 1, k_v < 1, n_v < 0, D < 0, non-finite values.
+// Throws std::invalid_argument for W < 1, k_v < 1, n_v < 0, D < 0, non-finite values,
+// sweep near steps < 0 or sweep lines < 1.
 void validate(const MarchOptions& options);
 
 // Maximum marching distance D (m) that `options` resolves to on `field`.

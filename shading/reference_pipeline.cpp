@@ -1,5 +1,7 @@
 #include "shading/reference_pipeline.h"
 
+#include "shading/horizon_sweep.h"
+
 #include "shading/azimuth.h"
 #include "shading/horizon_subsample.h"
 #include "shading/shading_modes.h"
@@ -53,7 +55,13 @@ void parallel_rows(int rows, unsigned threads, const std::function<void(int)>& b
   if (error) std::rethrow_exception(error);
 }
 
-HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options) : field_(field) {
+bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options) {
+  return options.march.method == HorizonMethod::Sweep && !options.exact && options.subsample == 1 &&
+         sweep_applicable(field, options.march);
+}
+
+HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options)
+    : field_(field), sweep_(uses_sweep(field, options)) {
   validate(options.march);
   if (!options.exact) {
     marcher_ = std::make_unique<HorizonMarcher>(field, options.march);
@@ -70,7 +78,9 @@ double HorizonOracle::max_elevation(int i, int j, Heading u) const {
 double HorizonOracle::ground_floor(int j, Heading u) const {
   const EarthCurvature& c = marcher_ ? marcher_->options().curvature : exact_.curvature;
   if (!c.enabled) return 0.0;
-  const double t1 = marcher_ ? marcher_->distance(0) : exact_step_length(field_, j, u, exact_.step_texels);
+  const double t1 = sweep_     ? exact_step_length(field_, j, u, 0.5)
+                    : marcher_ ? marcher_->distance(0)
+                               : exact_step_length(field_, j, u, exact_.step_texels);
   return -std::atan(t1 / (2.0 * c.effective_radius()));
 }
 
@@ -156,9 +166,18 @@ class LitShading {
 // texel: NaN, never marched; no step on the grid: −∞). Holds (W_f/s)·(H_f/s)·W doubles.
 class HorizonSource {
  public:
-  HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, int s,
+  HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, const ProductOptions& options,
                 const std::vector<Heading>& headings)
-      : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, s}, rows_{field.height, s} {}
+      : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, options.subsample},
+        rows_{field.height, options.subsample}, march_(options.march), sweep_(uses_sweep(field, options)) {}
+
+  // Sweep: the far slopes of every heading (W·N² floats), before horizons().
+  void sweep(unsigned threads, const ProgressCallback& progress) {
+    if (!sweep_) return;
+    far_.resize(headings_.size());
+    parallel_rows(static_cast<int>(headings_.size()), threads,
+                  [&](int k) { far_[k] = sweep_far_slopes(field_, headings_[k], march_); }, progress);
+  }
 
   bool subsampled() const { return cols_.step > 1; }
   // Share of the texels' work done by march_coarse (for progress): coarse / (coarse + all).
@@ -184,6 +203,12 @@ class HorizonSource {
   }
 
   void horizons(int i, int j, std::vector<double>& sigma) const {
+    if (sweep_) {
+      const std::size_t texel = static_cast<std::size_t>(j) * field_.width + i;
+      for (std::size_t k = 0; k < headings_.size(); ++k)
+        sigma[k] = sweep_max_elevation(field_, i, j, headings_[k], far_[k][texel], march_);
+      return;
+    }
     if (!subsampled()) {
       for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = oracle_.max_elevation(i, j, headings_[k]);
       return;
@@ -211,6 +236,9 @@ class HorizonSource {
   const std::vector<Heading>& headings_;
   SubsampleAxis cols_, rows_;
   std::vector<double> coarse_;  // [(cj·count_x + ci)·W + k]
+  const MarchOptions& march_;
+  bool sweep_;
+  std::vector<std::vector<float>> far_;  // sweep: per heading, [j·width + i]
 };
 
 }  // namespace
@@ -291,9 +319,11 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
                                   : geographic_headings(w_sky);
 
   // Raw horizons: with sub-sampling, the coarse texels are marched first.
-  HorizonSource horizons(oracle, field, options.subsample, headings);
+  HorizonSource horizons(oracle, field, options, headings);
   const double coarse_share = horizons.coarse_share();
   horizons.march_coarse(options.threads, [&](double f) { main_progress(coarse_share * f); });
+  horizons.sweep(options.threads, [&](double f) { main_progress(0.5 * f); });
+  const double sweep_share = uses_sweep(field, options) ? 0.5 : 0.0;
 
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
@@ -339,7 +369,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
         case Product::Shadow: break;  // returned above
       }
     }
-  }, [&](double f) { main_progress(coarse_share + (1.0 - coarse_share) * f); });
+  }, [&](double f) { main_progress(coarse_share + sweep_share + (1.0 - coarse_share - sweep_share) * f); });
   return out;
 }
 

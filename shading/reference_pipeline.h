@@ -22,6 +22,11 @@ void parallel_rows(int rows, unsigned threads, const std::function<void(int row)
                    const ProgressCallback& progress = {});
 
 // The horizon of one texel and heading, from either marcher; raw maxima, no floor.
+// Whether compute_product finds `field`'s horizons by sweeping (horizon_sweep.h): the
+// method asks for it, it applies (sweep_applicable), and neither the exact march nor
+// sub-sampling (a march feature) is asked for. Every backend decides by this.
+bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options);
+
 class HorizonOracle {
  public:
   HorizonOracle(const terrain::HeightField& field, const ProductOptions& options);
@@ -30,11 +35,13 @@ class HorizonOracle {
   // Largest elevation angle (rad) along u from texel (i, j); −∞ if none on the grid.
   double max_elevation(int i, int j, Heading u) const;
   // The receiver's own ground level seen at the first march distance t₁ (the floor of
-  // the `horizon` product): 0, or −atan(t₁/(2R_eff)) with Earth curvature.
+  // the `horizon` product): 0, or −atan(t₁/(2R_eff)) with Earth curvature. The sweep's
+  // t₁ is the exact march's half texel.
   double ground_floor(int j, Heading u) const;
 
  private:
   const terrain::HeightField& field_;
+  bool sweep_ = false;
   std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march
   ExactMarch exact_;
 };

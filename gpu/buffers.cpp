@@ -17,8 +17,12 @@ void check_range(std::size_t offset, std::size_t bytes, std::size_t size, const 
                             std::to_string(size));
 }
 
-GLenum internal_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_R32F : GL_RGBA32F; }
-GLenum pixel_format(TextureFormat f) { return f == TextureFormat::R32F ? GL_RED : GL_RGBA; }
+GLenum internal_format(TextureFormat f) {
+  return f == TextureFormat::R32F ? GL_R32F : f == TextureFormat::RG32F ? GL_RG32F : GL_RGBA32F;
+}
+GLenum pixel_format(TextureFormat f) {
+  return f == TextureFormat::R32F ? GL_RED : f == TextureFormat::RG32F ? GL_RG : GL_RGBA;
+}
 
 }  // namespace
 
@@ -171,6 +175,55 @@ void Texture2D::bind_sampler(unsigned unit) const { glBindTextureUnit(unit, mId)
 void Texture2D::bind_image(unsigned unit, bool read, bool write) const {
   const GLenum access = read && write ? GL_READ_WRITE : write ? GL_WRITE_ONLY : GL_READ_ONLY;
   glBindImageTexture(unit, mId, 0, GL_FALSE, 0, access, internal_format(mFormat));
+}
+
+TextureArray::TextureArray(int width, int height, int layers) : mWidth(width), mHeight(height), mLayers(layers) {
+  if (width < 1 || height < 1 || layers < 1) throw std::invalid_argument("TextureArray: size must be positive");
+  GLint max_size = 0, max_layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (width > max_size || height > max_size || layers > max_layers)
+    throw std::runtime_error("TextureArray: " + std::to_string(width) + "×" + std::to_string(height) + "×" +
+                             std::to_string(layers) + " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size) +
+                             " or GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(max_layers) + " (process in tiles)");
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mId);
+  glTextureStorage3D(mId, 1, GL_R32F, width, height, layers);
+  glTextureParameteri(mId, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(mId, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(mId, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(mId, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+TextureArray::~TextureArray() {
+  if (mId) glDeleteTextures(1, &mId);
+}
+
+TextureArray::TextureArray(TextureArray&& other) noexcept
+    : mId(std::exchange(other.mId, 0)), mWidth(other.mWidth), mHeight(other.mHeight), mLayers(other.mLayers) {}
+
+TextureArray& TextureArray::operator=(TextureArray&& other) noexcept {
+  if (this != &other) {
+    if (mId) glDeleteTextures(1, &mId);
+    mId = std::exchange(other.mId, 0);
+    mWidth = other.mWidth, mHeight = other.mHeight, mLayers = other.mLayers;
+  }
+  return *this;
+}
+
+void TextureArray::clear(float value) const { glClearTexImage(mId, 0, GL_RED, GL_FLOAT, &value); }
+
+std::vector<float> TextureArray::download() const {
+  std::vector<float> out(static_cast<std::size_t>(mWidth) * mHeight * mLayers);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(mId, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
+  return out;
+}
+
+void TextureArray::bind_sampler(unsigned unit) const { glBindTextureUnit(unit, mId); }
+
+void TextureArray::bind_image(unsigned unit, bool read, bool write) const {
+  const GLenum access = read && write ? GL_READ_WRITE : write ? GL_WRITE_ONLY : GL_READ_ONLY;
+  glBindImageTexture(unit, mId, 0, GL_TRUE, 0, access, GL_R32F);
 }
 
 BufferTexture::BufferTexture(const Buffer& values, TextureFormat format) {

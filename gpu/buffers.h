@@ -62,7 +62,7 @@ class Buffer {
   std::size_t mSize = 0;
 };
 
-enum class TextureFormat { R32F, RGBA32F };
+enum class TextureFormat { R32F, RG32F, RGBA32F };
 
 // A single-level 2D float texture (no mipmaps, nearest filtering, clamp to edge).
 // Shaders read it with texelFetch (exact) or bind it as an image.
@@ -79,7 +79,7 @@ class Texture2D {
   std::uint32_t id() const { return mId; }
   int width() const { return mWidth; }
   int height() const { return mHeight; }
-  int channels() const { return mFormat == TextureFormat::R32F ? 1 : 4; }
+  int channels() const { return mFormat == TextureFormat::R32F ? 1 : mFormat == TextureFormat::RG32F ? 2 : 4; }
 
   // Whole-texture transfers, row 0 first; size must be width·height·channels.
   void upload(std::span<const float> texels);
@@ -92,6 +92,31 @@ class Texture2D {
   std::uint32_t mId = 0;
   int mWidth = 0, mHeight = 0;
   TextureFormat mFormat = TextureFormat::R32F;
+};
+
+// A single-level r32f 2D array texture (nearest, clamp to edge): one layer per band,
+// written as a layered image2DArray and read with texelFetch from a sampler2DArray.
+// No storage-block or buffer-texture limit applies, only GL_MAX_TEXTURE_SIZE and
+// GL_MAX_ARRAY_TEXTURE_LAYERS (throws std::runtime_error beyond them).
+class TextureArray {
+ public:
+  TextureArray() = default;
+  TextureArray(int width, int height, int layers);
+  ~TextureArray();
+  TextureArray(TextureArray&& other) noexcept;
+  TextureArray& operator=(TextureArray&& other) noexcept;
+  TextureArray(const TextureArray&) = delete;
+  TextureArray& operator=(const TextureArray&) = delete;
+
+  std::uint32_t id() const { return mId; }
+  void clear(float value) const;  // every texel of every layer
+  std::vector<float> download() const;  // layer-major, row 0 first
+  void bind_sampler(unsigned unit) const;                       // sampler2DArray at `unit`
+  void bind_image(unsigned unit, bool read, bool write) const;  // image2DArray, all layers
+
+ private:
+  std::uint32_t mId = 0;
+  int mWidth = 0, mHeight = 0, mLayers = 0;
 };
 
 // A buffer texture (samplerBuffer, texelFetch by index) viewing a Buffer as r32f or rgba32f.

@@ -107,6 +107,10 @@ void ComputeProgram::set_uniform(std::string_view name, float value) const {
   glProgramUniform1f(mProgram, uniform_location(name), value);
 }
 
+void ComputeProgram::set_uniform(std::string_view name, double value) const {
+  glProgramUniform1d(mProgram, uniform_location(name), value);
+}
+
 void ComputeProgram::set_uniform(std::string_view name, float x, float y, float z) const {
   glProgramUniform3f(mProgram, uniform_location(name), x, y, z);
 }

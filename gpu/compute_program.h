@@ -40,6 +40,7 @@ class ComputeProgram {
   void set_uniform(std::string_view name, int value) const;
   void set_uniform(std::string_view name, unsigned value) const;
   void set_uniform(std::string_view name, float value) const;
+  void set_uniform(std::string_view name, double value) const;  // a GLSL double
   void set_uniform(std::string_view name, float x, float y, float z) const;  // vec3
 
   // Binds the program and dispatches enough work groups to cover nx × ny × nz

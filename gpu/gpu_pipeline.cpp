@@ -29,6 +29,7 @@
 #include "gpu/wedge_fourier.h"
 #include "shading/azimuth.h"
 #include "shading/horizon_march.h"
+#include "shading/horizon_sweep.h"
 #include "shading/horizon_subsample.h"
 #include "shading/lighting.h"
 #include "shading/nlp.h"
@@ -52,6 +53,7 @@ enum Binding : int {
   kOutput = 5,
   kSchedule = 6,  // a uniform block (horizon_march.comp)
   kCoeffs = 8,
+  kFar = 9,       // texture unit of the sweep's far slopes (horizon_near.comp)
   kTable = 11,
   kShadow = 12,
   kSunSchedule = 13,
@@ -63,6 +65,12 @@ enum Binding : int {
 // block size): k_v = 16 over a 16384² grid's diagonal needs 234.
 constexpr int kMaxMarchSteps = 256;
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
+constexpr int kSweepLocalSize = 64;  // sweep lines per work group
+constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's image2DArray of far slopes
+constexpr int kHullImageUnit = 1;    // and its image2D of convex hulls
+// Hull scratch per sweep dispatch: lines × samples × 8 B, at most this (and
+// GL_MAX_TEXTURE_SIZE lines); a heading's lines go in as many dispatches as that needs.
+constexpr std::size_t kHullBudgetBytes = std::size_t{64} << 20;
 
 using Clock = std::chrono::steady_clock;
 
@@ -77,17 +85,14 @@ bool needs_visibility(Product product) { return product == Product::Shaded || pr
 // Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
 // the wedge operator's math-frame samples φ_j = j·2π/W for shaded and irradiance.
 // Snapped (see shading/azimuth.h) so cardinal rays along the grid's edges stay on it.
-std::vector<float> band_headings(Product product, int w) {
-  std::vector<float> out;
-  for (int k = 0; k < w; ++k) {
-    const shading::Heading u = needs_visibility(product)
-                                   ? shading::heading_from_math(shading::kTwoPi * k / w)
-                                   : shading::heading_from_geographic(shading::band_azimuth(k, w));
-    out.push_back(static_cast<float>(u.east));
-    out.push_back(static_cast<float>(u.north));
-  }
+std::vector<shading::Heading> band_headings(Product product, int w) {
+  std::vector<shading::Heading> out;
+  for (int k = 0; k < w; ++k)
+    out.push_back(needs_visibility(product) ? shading::heading_from_math(shading::kTwoPi * k / w)
+                                            : shading::heading_from_geographic(shading::band_azimuth(k, w)));
   return out;
 }
+
 
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
   GlslDefines d;
@@ -131,6 +136,53 @@ bool bilinear_levels(const shading::MarchOptions& o) {
 // Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.
 bool sun_lit(Product product, const shading::ProductOptions& o) {
   return shading::uses_lighting(product, o) && sky::luminance(o.lighting->sun.dni) > 0.0;
+}
+
+// Stage 2 with the sweep (shading/horizon_sweep.h): horizon_sweep.comp for every band's
+// lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
+void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, const shading::MarchOptions& o,
+                const std::vector<shading::Heading>& headings, const TextureArray& far) {
+  std::vector<shading::SweepGeometry> geometry;
+  int max_samples = 1;
+  for (const shading::Heading& u : headings) {
+    geometry.push_back(shading::sweep_geometry(field, u, o.sweep_lines));
+    max_samples = std::max(max_samples, geometry.back().samples);
+  }
+  const std::size_t per_line = static_cast<std::size_t>(max_samples) * 2 * sizeof(float);
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  int lanes = 1;
+  for (const shading::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
+  lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
+                                                  std::max<std::size_t>(1, kHullBudgetBytes / per_line)}));
+  const Texture2D hull(lanes, max_samples, TextureFormat::RG32F);  // throws beyond GL_MAX_TEXTURE_SIZE
+  hull.bind_image(kHullImageUnit, true, true);
+  far.clear(-std::numeric_limits<float>::infinity());
+  far.bind_image(kFarImageUnit, false, true);
+  set_grid_uniforms(sweep, field);
+  sweep.set_uniform("stride", lanes);
+  sweep.set_uniform("lines_per_texel", o.sweep_lines);
+  for (std::size_t k = 0; k < geometry.size(); ++k) {
+    const shading::SweepGeometry& g = geometry[k];
+    sweep.set_uniform("band", static_cast<int>(k));
+    sweep.set_uniform("x_dominant", g.x_dominant ? 1 : 0);
+    sweep.set_uniform("delta_a", static_cast<float>(g.delta_a));
+    sweep.set_uniform("extent_a", g.extent_a);
+    sweep.set_uniform("extent_b", g.extent_b);
+    sweep.set_uniform("samples", g.samples);
+    sweep.set_uniform("lines", g.lines);
+    sweep.set_uniform("r_f", static_cast<float>(g.r));
+    sweep.set_uniform("c_low_f", static_cast<float>(g.c_low));
+    sweep.set_uniform("spacing_f", static_cast<float>(g.spacing));
+    sweep.set_uniform("r_d", g.r);
+    sweep.set_uniform("c_low_d", g.c_low);
+    sweep.set_uniform("drop", static_cast<float>(o.curvature.drop_per_square_metre() * g.step_m * g.step_m));
+    sweep.set_uniform("step_m", static_cast<float>(g.step_m));
+    for (int first = 0; first < g.lines; first += lanes) {
+      sweep.set_uniform("line_offset", first);
+      sweep.dispatch_covering(std::min(lanes, g.lines - first));
+    }
+  }
 }
 
 // Stage 0 (lit products with a sun, and shadow): sun_shadow.comp over the whole field
@@ -192,6 +244,9 @@ struct GpuProductPipeline::Impl {
   // per-step row-spacing fetches (5–10 % of the march on llvmpipe). Compiled at first use.
   std::optional<ComputeProgram> march_one_dx;
   GlslDefines march_defines;
+  // The sweep (shading/horizon_sweep.h), compiled at the first field that uses it.
+  std::optional<ComputeProgram> sweep, near;
+  std::vector<shading::Heading> band_headings;
   std::optional<ComputeProgram> products;  // surface_products.comp
   std::optional<ComputeProgram> sun;       // sun_shadow.comp: shadow, and lit products with a sun
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
@@ -253,7 +308,12 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   }
   if (product == Product::Shadow) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);
-  const std::vector<float> headings = band_headings(product, k.azimuths);
+  k.band_headings = band_headings(product, k.azimuths);
+  std::vector<float> headings;
+  for (const shading::Heading& u : k.band_headings) {
+    headings.push_back(static_cast<float>(u.east));
+    headings.push_back(static_cast<float>(u.north));
+  }
   k.headings = Buffer::from(std::span<const float>(headings));
 
   // March kernel.
@@ -375,7 +435,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   int steps_count = 0;
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
-  if (!mOptions.exact) {
+  const bool sweep = shading::uses_sweep(field, mOptions);  // as the reference decides
+  if (!mOptions.exact && !sweep) {
     const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
     steps_count = static_cast<int>(steps.distances.size());
     if (steps_count > kMaxMarchSteps)
@@ -454,13 +515,15 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // buffer textures (views of the resident buffers, texture units = their bindings).
   BufferTexture heights_tex, row_dx_tex, coeffs_tex;
   if (!mOptions.exact) {
-    k.schedule.buffer().bind_uniform(kSchedule);
+    if (!sweep) k.schedule.buffer().bind_uniform(kSchedule);
     heights_tex = BufferTexture(k.field.heights());
     row_dx_tex = BufferTexture(k.field.row_dx());
-    coeffs_tex = BufferTexture(k.pyramid ? k.pyramid->coeffs() : k.no_coeffs);
     heights_tex.bind_sampler(kHeights);
     row_dx_tex.bind_sampler(kRowDx);
-    coeffs_tex.bind_sampler(kCoeffs);
+    if (!sweep) {
+      coeffs_tex = BufferTexture(k.pyramid ? k.pyramid->coeffs() : k.no_coeffs);
+      coeffs_tex.bind_sampler(kCoeffs);
+    }
   }
   if (needs_visibility(mProduct)) {
     k.table.bind_storage(kTable);  // the sky SH of the SH modes
@@ -472,20 +535,37 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   if (k.sun)
     t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
 
-  // Stage 2: the march. Stage 3: the product. Row chunks bound a dispatch's length.
+  // Stage 2: the march (with the sweep: the sweep over the whole field, then per chunk
+  // the near steps). Stage 3: the product. Row chunks bound a dispatch's length.
   const bool one_dx = !mOptions.exact && std::adjacent_find(field.dx_per_row.begin(), field.dx_per_row.end(),
                                                              std::not_equal_to<>()) == field.dx_per_row.end();
-  if (one_dx && !k.march_one_dx) {
+  TextureArray far;
+  if (sweep) {
+    if (!k.sweep) {
+      GlslDefines d = common_defines(k.azimuths, mOptions);
+      d.set("RAY_TEXTURES", 1).set("NEAR_STEPS", mOptions.march.sweep_near_steps).set("FAR_BINDING", kFar);
+      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
+      d.set("SWEEP_LOCAL_SIZE", kSweepLocalSize).set("HULL_IMAGE_UNIT", kHullImageUnit).set("FAR_IMAGE_UNIT", kFarImageUnit);
+      k.sweep.emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
+    }
+    far = TextureArray(w, h, bands);
+    const auto sweep_start = Clock::now();
+    sweep_pass(*k.sweep, field, mOptions.march, k.band_headings, far);
+    glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
+    t.march_ms += ms_since(sweep_start);
+    far.bind_sampler(kFar);
+  } else if (one_dx && !k.march_one_dx) {
     GlslDefines d = k.march_defines;
     d.set("ONE_DX", 1);
     k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
   }
-  const ComputeProgram& march = one_dx ? *k.march_one_dx : *k.march;
+  const ComputeProgram& march = sweep ? *k.near : one_dx ? *k.march_one_dx : *k.march;
   set_grid_uniforms(march, field);
-  if (one_dx) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
+  if (one_dx && !sweep) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
   const ComputeProgram& products = *k.products;
   set_grid_uniforms(products, field);
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));
+  if (products.has_uniform("half_texel_floor")) products.set_uniform("half_texel_floor", sweep ? 1 : 0);
 
   if (mOptions.exact) {
     // The CPU stops at t > D·(1 + 1e−12); float t carries ~1e−7 relative error, so the
@@ -493,7 +573,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
                                                              : shading::dem_extent(field);
     march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
-  } else {
+  } else if (!sweep) {
     march.set_uniform("steps", steps_count);
     march.set_uniform("z_bound", z_bound);
   }

@@ -51,7 +51,8 @@ uniform int row_offset;  // first row of this dispatch
 uniform int chunk_rows;  // rows of the sigma and output buffers
 
 #if PRODUCT == PRODUCT_HORIZON && !EXACT_MARCH
-uniform float first_distance;  // t1 (m): the multi-resolution march's first distance
+uniform float first_distance;  // t1 (m): the multi-resolution march's first distance,
+uniform int half_texel_floor;  // or (1: horizons swept) the exact march's half texel
 #endif
 
 #if NEEDS_VIS
@@ -215,7 +216,7 @@ void main() {
 #if EXACT_MARCH
     float t1 = exactStepLength(j, headings[k], STEP_TEXELS);
 #else
-    float t1 = first_distance;
+    float t1 = half_texel_floor != 0 ? exactStepLength(j, headings[k], 0.5) : first_distance;
 #endif
     values[chunkIndex(k, j, i)] = valid ? degrees(max(rawSigma(k, j, i), -atan(t1 * INV_TWO_R_EFF))) : nan;
   }

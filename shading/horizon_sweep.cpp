@@ -18,7 +18,7 @@ bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& o) 
 }
 
 int SweepGeometry::owner(double a, double b) const {
-  return static_cast<int>(std::floor((b - r * a - c_low) / spacing + 0.5));
+  return static_cast<int>(std::floor((b - r * a - c_low) * lines_per_texel + 0.5));
 }
 
 SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel) {
@@ -32,6 +32,7 @@ SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int l
   g.extent_a = g.x_dominant ? field.width : field.height;
   g.extent_b = g.x_dominant ? field.height : field.width;
   g.samples = 2 * (g.extent_a - 1) + 1;
+  g.lines_per_texel = lines_per_texel;
   g.spacing = 1.0 / lines_per_texel;
   // c = b − r·a over the grid's corners, with a line of margin on each side.
   const double a1 = g.extent_a - 1.0, b1 = g.extent_b - 1.0;

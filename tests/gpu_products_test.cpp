@@ -24,6 +24,7 @@
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
 #include "shading/products.h"
+#include "shading/reference_pipeline.h"
 #include "terrain/dem_reader.h"
 #include "terrain/synthetic.h"
 
@@ -166,6 +167,33 @@ TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
   expect_product_matches(pipeline, projected, "one dx");
   expect_product_matches(pipeline, geographic, "per-row dx");
   expect_product_matches(pipeline, projected, "one dx again");
+}
+
+// The sweep (shading/horizon_sweep.h: horizon_sweep.comp, horizon_near.comp) against
+// the reference's sweep: every product on a projected field with dx ≠ dy (both
+// dominant axes, all quadrants), near steps and lines varied; a geographic field and
+// sub-sampling fall back to the march in both.
+TEST_F(GpuProductsTest, SweepMatchesReference) {
+  HeightField field = synthetic_field();
+  field.dy = 21.0;  // rays of other slopes in texel units than with square texels
+  ProductOptions o = default_options();
+  o.march.method = shading::HorizonMethod::Sweep;
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded}) {
+    const GpuProductPipeline pipeline(p, o);
+    const ProductBands gpu = expect_product_matches(pipeline, field, "sweep");
+    EXPECT_TRUE(std::isnan(gpu.at(0, 50, 40))) << "nodata texel, " << shading::product_name(p);
+  }
+  o.march.sweep_near_steps = 0;
+  o.march.sweep_lines = 3;
+  o.march.curvature.radius_m = 20000.0;  // curvature that matters on a 3 km field
+  expect_product_matches(field, Product::Horizon, o, "sweep K 0, 3 lines, small Earth");
+  o.march.sweep_near_steps = 7;
+  o.march.sweep_lines = 1;
+  expect_product_matches(field, Product::Svf, o, "sweep K 7, 1 line");
+  HeightField geographic = synthetic_scene(60, 52, 5);
+  for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
+  ASSERT_FALSE(shading::uses_sweep(geographic, o));
+  expect_product_matches(geographic, Product::Horizon, o, "sweep asked, geographic: march");
 }
 
 // The march's other settings: plain max, no pyramid (bilinear level 0), bilinear

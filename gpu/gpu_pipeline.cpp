@@ -161,7 +161,6 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   far.bind_image(kFarImageUnit, false, true);
   set_grid_uniforms(sweep, field);
   sweep.set_uniform("stride", lanes);
-  sweep.set_uniform("lines_per_texel", o.sweep_lines);
   for (std::size_t k = 0; k < geometry.size(); ++k) {
     const shading::SweepGeometry& g = geometry[k];
     sweep.set_uniform("band", static_cast<int>(k));
@@ -543,7 +542,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   if (sweep) {
     if (!k.sweep) {
       GlslDefines d = common_defines(k.azimuths, mOptions);
-      d.set("RAY_TEXTURES", 1).set("NEAR_STEPS", mOptions.march.sweep_near_steps).set("FAR_BINDING", kFar);
+      d.set("RAY_TEXTURES", 1).set("NEAR_STEPS", mOptions.march.sweep_near_steps).set("FAR_BINDING", kFar)
+          .set("LINES_PER_TEXEL", mOptions.march.sweep_lines);
       k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
       d.set("SWEEP_LOCAL_SIZE", kSweepLocalSize).set("HULL_IMAGE_UNIT", kHullImageUnit).set("FAR_IMAGE_UNIT", kFarImageUnit);
       k.sweep.emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));

@@ -14,6 +14,8 @@
 //  2. shaders/horizon_march.comp: multi-resolution march per texel and azimuth with
 //     the CPU marcher's own step schedule (t_s, level l_s) → raw horizons;
 //     with options.exact, shaders/horizon_exact.comp (the dense exact march) instead;
+//     where shading::uses_sweep, stages 1–2 are the sweep instead: horizon_sweep.comp
+//     over the whole field (far slopes, W layers), then horizon_near.comp per chunk;
 //  3. shaders/surface_products.comp: per texel, Horn normal and the product
 //     (horizon floors, svf, exact skyview slice integrals, or NLP slices → linear
 //     or B-spline wedge assembly → sky×BRDF table shading);

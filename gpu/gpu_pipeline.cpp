@@ -70,7 +70,10 @@ constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's image2DArray of far
 constexpr int kHullImageUnit = 1;    // and its image2D of convex hulls
 // Hull scratch per sweep dispatch: lines × samples × 8 B, at most this (and
 // GL_MAX_TEXTURE_SIZE lines); a heading's lines go in as many dispatches as that needs.
-constexpr std::size_t kHullBudgetBytes = std::size_t{64} << 20;
+// Small because fresh memory is dear on the 2-core VMs CI runs on (≈ 3 ms per MiB of
+// first touch, measured): 16 MiB is still ~1000 lines per dispatch at 1024², plenty
+// for llvmpipe's 2×8 lanes; a large GPU would want more lanes in flight.
+constexpr std::size_t kHullBudgetBytes = std::size_t{16} << 20;
 
 using Clock = std::chrono::steady_clock;
 
@@ -544,7 +547,9 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       GlslDefines d = common_defines(k.azimuths, mOptions);
       d.set("RAY_TEXTURES", 1).set("NEAR_STEPS", mOptions.march.sweep_near_steps).set("FAR_BINDING", kFar)
           .set("LINES_PER_TEXEL", mOptions.march.sweep_lines);
-      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
+      GlslDefines near = d;
+      near.set("ONE_DX", 1);  // the sweep's fields have one row spacing
+      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", near));
       d.set("SWEEP_LOCAL_SIZE", kSweepLocalSize).set("HULL_IMAGE_UNIT", kHullImageUnit).set("FAR_IMAGE_UNIT", kFarImageUnit);
       k.sweep.emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
     }
@@ -561,7 +566,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   }
   const ComputeProgram& march = sweep ? *k.near : one_dx ? *k.march_one_dx : *k.march;
   set_grid_uniforms(march, field);
-  if (one_dx && !sweep) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
+  if (one_dx) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
   const ComputeProgram& products = *k.products;
   set_grid_uniforms(products, field);
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));

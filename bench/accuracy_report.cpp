@@ -1,11 +1,13 @@
 // Prints, as markdown, the accuracy of the default multi-resolution horizon march
 // against the exact ground truth (dense half-texel march, 360 azimuths) for the svf
 // and skyview products on crops of real DEMs in shared/dem, plus a few parameter
-// variants. Usage: accuracy_report [stride]  (truth at every stride-th texel, default 2).
+// variants, and the horizon sweep on the projected crops.
+// Usage: accuracy_report [stride]  (truth at every stride-th texel, default 2).
 #include "shading/azimuth.h"
 #include "shading/horizon_exact.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
+#include "shading/horizon_sweep.h"
 #include "shading/surface_normals.h"
 #include "terrain/dem_reader.h"
 
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 using namespace skylit;
@@ -116,6 +119,15 @@ std::vector<Variant> variants() {
   Variant flat_plain{"no pyramid, plain max", {}};
   set_level_sampling(flat_plain.march, LevelSampling::None);
   v.push_back(flat_plain);
+  // The sweep (horizon_sweep.h) at (near steps K, lines per texel); projected crops only.
+  for (const auto& [k, lines, name] : {std::tuple{2, 1, "sweep, K 2, 1 line"}, std::tuple{4, 1, "sweep, K 4, 1 line"},
+                                       std::tuple{4, 2, "sweep, K 4, 2 lines"}, std::tuple{8, 3, "sweep, K 8, 3 lines"}}) {
+    Variant x{name, {}};
+    x.march.method = HorizonMethod::Sweep;
+    x.march.sweep_near_steps = k;
+    x.march.sweep_lines = lines;
+    v.push_back(x);
+  }
   return v;
 }
 
@@ -155,6 +167,7 @@ int main(int argc, char** argv) {
     for (const Variant& v : variants()) {
       ProductOptions o;
       o.march = v.march;
+      if (o.march.method == HorizonMethod::Sweep && !uses_sweep(f, o)) continue;  // it would march
       const auto t1 = std::chrono::steady_clock::now();
       const ProductBands svf = compute_product(f, Product::Svf, o);
       const ProductBands sky = compute_product(f, Product::Skyview, o);
@@ -162,10 +175,10 @@ int main(int argc, char** argv) {
       row(v.name, compare(truth.svf, [&](std::size_t k) { return svf.at(0, truth.ii[k], truth.jj[k]); }),
           compare(truth.skyview, [&](std::size_t k) { return sky.at(0, truth.ii[k], truth.jj[k]); }), secs);
     }
-    {
-      // The horizon product itself (default march), per band, in degrees. Truth is
-      // floored at 0: the curvature floor (≈ −1e-5°) is below the table's precision.
-      const ProductBands hz = compute_product(f, Product::Horizon, ProductOptions{});
+    // The horizon product itself, per band, in degrees. Truth is floored at 0: the
+    // curvature floor (≈ −1e-5°) is below the table's precision.
+    auto horizon_row = [&](const char* what, const ProductOptions& o) {
+      const ProductBands hz = compute_product(f, Product::Horizon, o);
       std::vector<double> truth_deg, got_deg;
       for (std::size_t k = 0; k < truth.ii.size(); ++k)
         for (int b = 0; b < 32; ++b) {
@@ -173,9 +186,14 @@ int main(int argc, char** argv) {
           got_deg.push_back(std::max(0.0, static_cast<double>(hz.at(b, truth.ii[k], truth.jj[k]))));
         }
       const Stats h = compare(truth_deg, [&](std::size_t k) { return got_deg[k]; });
-      std::printf("\n`horizon` product, default march, all 32 bands: RMSE %.2f°, max |error| %.2f°, bias %+.2f°.\n",
-                  h.rmse, h.max_abs, h.bias);
-    }
+      std::printf("\n`horizon` product, %s, all 32 bands: RMSE %.2f°, max |error| %.2f°, bias %+.2f°.\n", what, h.rmse,
+                  h.max_abs, h.bias);
+    };
+    horizon_row("default march", ProductOptions{});
+    ProductOptions swept;
+    swept.march.method = HorizonMethod::Sweep;
+    swept.march.sweep_lines = 1;
+    if (uses_sweep(f, swept)) horizon_row("sweep K 4, 1 line", swept);
     std::printf("\n");
     std::fflush(stdout);
   }

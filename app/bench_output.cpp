@@ -42,14 +42,15 @@ std::string write_file(const std::string& file, const std::string& text) {
   return "write failed";
 }
 
-constexpr const char* kTableFormat = "%-10s %5s %3s %3s %3s %2s %2s %2s %-7s %-8s %-6s %-8s %10s %10s %10s %10s %10s %9s %9s\n";
+constexpr const char* kTableFormat =
+    "%-10s %5s %3s %3s %3s %2s %2s %2s %-7s %-8s %-6s %-5s %2s %2s %-8s %10s %10s %10s %10s %10s %9s %9s\n";
 
 }  // namespace
 
 void print_table_header(std::ostream& out) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, kTableFormat, "scene", "size", "W", "kv", "o", "n", "N", "s", "wedge", "levels", "max", "preset", "ms_median",
-                "ms_p10", "ms_p90", "sky_rmse", "sky_max", "shd_rmse", "shd_max");
+  std::snprintf(buf, sizeof buf, kTableFormat, "scene", "size", "W", "kv", "o", "n", "N", "s", "wedge", "levels", "max",
+                "hz", "K", "L", "preset", "ms_median", "ms_p10", "ms_p90", "sky_rmse", "sky_max", "shd_rmse", "shd_max");
   out << buf << std::flush;
 }
 
@@ -61,7 +62,9 @@ void print_table_row(std::ostream& out, const BenchRow& r) {
                 number(s.level_offset, "%g").c_str(), std::to_string(s.sh_order).c_str(),
                 std::to_string(s.nlp_order).c_str(), std::to_string(s.subsample).c_str(),
                 std::string(wedge_name(s.wedge)).c_str(), std::string(shading::level_sampling_name(s.levels)).c_str(),
-                std::string(shading::horizon_max_name(s.smooth_max)).c_str(), preset_name(s).c_str(),
+                std::string(shading::horizon_max_name(s.smooth_max)).c_str(),
+                std::string(shading::horizon_method_name(s.horizons)).c_str(), std::to_string(s.near_steps).c_str(),
+                std::to_string(s.sweep_lines).c_str(), preset_name(s).c_str(),
                 r.skipped ? "skipped" : number(r.frame_ms.median, "%.2f").c_str(),
                 number(r.frame_ms.p10, "%.2f").c_str(), number(r.frame_ms.p90, "%.2f").c_str(),
                 number(r.skyview.rmse, "%.5f").c_str(), number(r.skyview.max, "%.4f").c_str(),
@@ -71,7 +74,8 @@ void print_table_row(std::ostream& out, const BenchRow& r) {
 
 std::string csv_text(const std::vector<BenchRow>& rows) {
   std::string text =
-      "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,preset,clock,"
+      "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,horizons,"
+      "near_steps,sweep_lines,preset,clock,"
       "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status\n";
   for (const BenchRow& r : rows) {
     const BenchSetting& s = r.setting;
@@ -79,7 +83,10 @@ std::string csv_text(const std::vector<BenchRow>& rows) {
             std::to_string(s.k_v) + "," + number(s.level_offset, "%g") + "," + std::to_string(s.sh_order) + "," +
             std::to_string(s.nlp_order) + "," + std::to_string(s.subsample) + "," + std::string(wedge_name(s.wedge)) +
             "," + std::string(shading::level_sampling_name(s.levels)) + "," +
-            std::string(shading::horizon_max_name(s.smooth_max)) + "," + preset_name(s) + "," + r.clock + "," + number(r.frame_ms.median, "%.4f") + "," +
+            std::string(shading::horizon_max_name(s.smooth_max)) + "," +
+            std::string(shading::horizon_method_name(s.horizons)) + "," + std::to_string(s.near_steps) + "," +
+            std::to_string(s.sweep_lines) + "," + preset_name(s) + "," + r.clock + "," +
+            number(r.frame_ms.median, "%.4f") + "," +
             number(r.frame_ms.p10, "%.4f") + "," + number(r.frame_ms.p90, "%.4f") + "," +
             number(r.wall_ms_median, "%.4f") + "," + number(r.skyview.rmse, "%.7g") + "," +
             number(r.skyview.max, "%.7g") + "," + number(r.shaded.rmse, "%.7g") + "," +

@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace skylit::app {
 namespace {
@@ -22,20 +23,39 @@ const std::vector<Wedge> kWedges = {Wedge::Linear, Wedge::BSpline};
 using Levels = shading::LevelSampling;
 const std::vector<Levels> kLevels = {Levels::None, Levels::Bilinear, Levels::BSpline};
 const std::vector<bool> kSmoothMax = {false, true};
+// The sweep's near steps K and lines per texel: crossed in the full sweep, and three
+// settings along both, cheapest first, that the other sweeps take.
+const std::vector<int> kNearSteps = {2, 4, 8};
+const std::vector<int> kSweepLines = {1, 2, 3};
+const std::vector<std::pair<int, int>> kSweeps = {{2, 1}, {4, 2}, {8, 3}};  // (K, lines)
 
-// Level sampling and maximum default to the library's (MarchOptions).
+// A march; level sampling and maximum default to the library's (MarchOptions).
 BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge,
                           Levels levels = shading::level_sampling(shading::MarchOptions{}),
                           bool smooth_max = shading::MarchOptions{}.smooth_max) {
-  return {w, k_v, o_v, n, 2 * n, s, wedge, levels, smooth_max, std::nullopt};
+  const shading::MarchOptions d;  // a march: the sweep knobs at their defaults
+  return {w, k_v, o_v, n, 2 * n, s, wedge, levels, smooth_max, shading::HorizonMethod::March, d.sweep_near_steps,
+          d.sweep_lines, std::nullopt};
+}
+
+// A sweep with the march knobs at the defaults and s = 1 (BenchSetting: no duplicates).
+BenchSetting sweep_setting(int w, int n, Wedge wedge, int near_steps, int lines) {
+  const shading::MarchOptions d;
+  BenchSetting s = make_setting(w, d.k_v, d.level_offset, n, 1, wedge);
+  s.horizons = shading::HorizonMethod::Sweep;
+  s.near_steps = near_steps;
+  s.sweep_lines = lines;
+  return s;
 }
 
 // Read back through apply_quality, so that every knob a preset sets is honoured.
 BenchSetting preset_setting(shading::Quality q) {
   shading::ProductOptions o;
   shading::apply_quality(q, o);
-  return {o.march.azimuths, o.march.k_v, o.march.level_offset, o.shaded.sh_order, o.shaded.nlp_order,
-          o.subsample, o.shaded.wedge, shading::level_sampling(o.march), o.march.smooth_max, q};
+  return {o.march.azimuths,         o.march.k_v,      o.march.level_offset,    o.shaded.sh_order,
+          o.shaded.nlp_order,       o.subsample,      o.shaded.wedge,          shading::level_sampling(o.march),
+          o.march.smooth_max,       o.march.method,   o.march.sweep_near_steps, o.march.sweep_lines,
+          q};
 }
 
 // Appends s unless an equal setting is already there.
@@ -71,6 +91,7 @@ std::vector<BenchSetting> default_sweep() {
   for (Wedge e : kWedges) around([&](BenchSetting& s) { s.wedge = e; });
   for (Levels l : kLevels) around([&](BenchSetting& s) { s.levels = l; });
   for (bool m : kSmoothMax) around([&](BenchSetting& s) { s.smooth_max = m; });
+  for (auto [k, lines] : kSweeps) add_unique(list, sweep_setting(d.azimuths, d.sh_order, d.wedge, k, lines));
   add_unique(list, highest());
   return list;
 }
@@ -90,6 +111,15 @@ std::vector<BenchSetting> full_sweep() {
       for (double o : kLevelOffsets)
         for (Levels l : kLevels)
           for (bool m : kSmoothMax) add_unique(list, make_setting(w, k, o, d.sh_order, d.subsample, d.wedge, l, m));
+  // The sweep ignores the pyramid knobs: the three sweeps crossed with W, n and wedge,
+  // and every (W, K, lines) at the default n and wedge.
+  for (int w : kAzimuths)
+    for (int n : kShOrders)
+      for (Wedge e : kWedges)
+        for (auto [k, lines] : kSweeps) add_unique(list, sweep_setting(w, n, e, k, lines));
+  for (int w : kAzimuths)
+    for (int k : kNearSteps)
+      for (int lines : kSweepLines) add_unique(list, sweep_setting(w, d.sh_order, d.wedge, k, lines));
   return list;
 }
 
@@ -121,6 +151,8 @@ std::string BenchSetting::label() const {
   const shading::MarchOptions defaults;
   if (levels != shading::level_sampling(defaults)) s << ' ' << shading::level_sampling_name(levels);
   if (smooth_max != defaults.smooth_max) s << ' ' << shading::horizon_max_name(smooth_max);
+  if (horizons != defaults.method) s << ' ' << shading::horizon_method_name(horizons);
+  if (horizons == shading::HorizonMethod::Sweep) s << " K" << near_steps << " L" << sweep_lines;
   return s.str();
 }
 
@@ -156,6 +188,9 @@ shading::ProductOptions options_for(const BenchSetting& s, unsigned threads) {
   o.shaded.wedge = s.wedge;
   shading::set_level_sampling(o.march, s.levels);
   o.march.smooth_max = s.smooth_max;
+  o.march.method = s.horizons;
+  o.march.sweep_near_steps = s.near_steps;
+  o.march.sweep_lines = s.sweep_lines;
   o.subsample = s.subsample;
   o.threads = threads;
   return o;

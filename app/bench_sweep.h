@@ -4,7 +4,9 @@
 // Swept (everything ProductOptions exposes that trades speed for accuracy):
 // azimuths W, pyramid levels per halving k_v, level offset o_v, SH order n (with NLP
 // order N = 2n, DESIGN.md step 4), horizon sub-sampling s, wedge interpolation, how
-// steps read heights (shading::LevelSampling) and the smooth or plain horizon maximum.
+// steps read heights (shading::LevelSampling), the smooth or plain horizon maximum,
+// and how horizons are found (march or sweep, with the sweep's near steps K and lines
+// per texel; horizon_sweep.h).
 #pragma once
 
 #include "shading/horizon_march.h"
@@ -30,17 +32,26 @@ struct BenchSetting {
   sh::WedgeInterpolation wedge = sh::WedgeInterpolation::Linear;
   shading::LevelSampling levels = shading::level_sampling(shading::MarchOptions{});
   bool smooth_max = shading::MarchOptions{}.smooth_max;
+  // Sweep settings keep the march knobs above (k_v, o_v, levels, max) and s = 1 at the
+  // defaults, march settings the sweep knobs: the sweep ignores the first, the march
+  // the second, so no two settings compute the same horizons.
+  shading::HorizonMethod horizons = shading::MarchOptions{}.method;
+  int near_steps = shading::MarchOptions{}.sweep_near_steps;  // K
+  int sweep_lines = shading::MarchOptions{}.sweep_lines;
   std::optional<shading::Quality> preset;  // the --quality preset this setting equals
 
+  // The same horizons (skyview depends on nothing else).
   bool same_march(const BenchSetting& o) const {
     return azimuths == o.azimuths && k_v == o.k_v && level_offset == o.level_offset && subsample == o.subsample &&
-           levels == o.levels && smooth_max == o.smooth_max;
+           levels == o.levels && smooth_max == o.smooth_max && horizons == o.horizons &&
+           near_steps == o.near_steps && sweep_lines == o.sweep_lines;
   }
   bool operator==(const BenchSetting& o) const {
     return same_march(o) && sh_order == o.sh_order && nlp_order == o.nlp_order && wedge == o.wedge;
   }
-  // "W32 kv4 o3 n4", plus " s2" / " bspl" where not 1 / linear, and the level sampling
-  // and horizon maximum where not the library defaults (" bspline", " smooth", ...).
+  // "W32 kv4 o3 n4", plus " s2" / " bspl" where not 1 / linear, the level sampling,
+  // horizon maximum and method where not the library defaults (" bspline", " smooth",
+  // " sweep", ...), and " K4 L2" for a sweep.
   std::string label() const;
 };
 
@@ -49,10 +60,11 @@ std::string_view wedge_name(sh::WedgeInterpolation w);
 
 // Names accepted by --sweep: "smoke" (the lowest, default and highest setting, for
 // tests), "default" (one knob at a time around the library defaults, the two extreme
-// corners and the presets: minutes at 128² on 2 cores), "full" (every combination of
-// W, k_v, o_v, n, s and wedge, plus every march (W, k_v, o_v, levels, max) at the
-// default n, s and wedge, plus the presets: 828, for GPU machines). Settings equal to a preset
-// carry it.
+// corners, three sweeps (K, lines) and the presets: 21, minutes at 128² on 2 cores),
+// "full" (every combination of W, k_v, o_v, n, s and wedge, plus every march (W, k_v,
+// o_v, levels, max) at the default n, s and wedge, plus the three sweeps crossed with
+// W, n and wedge and every sweep (W, K, lines) at the default n and wedge, plus the
+// presets: 924, for GPU machines). Settings equal to a preset carry it.
 std::vector<std::string> sweep_names();
 // Throws std::invalid_argument naming the valid sweeps.
 std::vector<BenchSetting> sweep_settings(std::string_view name);

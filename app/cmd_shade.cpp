@@ -8,9 +8,11 @@
 #include "app/shade_output.h"
 #include "gpu/timer.h"
 
+#include "shading/horizon_sweep.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "shading/quality.h"
+#include "shading/reference_pipeline.h"
 #include "terrain/dem_reader.h"
 #include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
@@ -44,6 +46,7 @@ struct ShadeArgs {
   std::string wedge = "linear";
   std::string levels{shading::level_sampling_name(shading::level_sampling(shading::MarchOptions{}))};
   std::string horizon_max{shading::horizon_max_name(shading::MarchOptions{}.smooth_max)};
+  std::string horizons{shading::horizon_method_name(shading::MarchOptions{}.method)};
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -119,6 +122,22 @@ std::vector<std::string> level_sampling_names() {
   return names;
 }
 
+std::vector<std::string> horizon_method_names() {
+  std::vector<std::string> names;
+  for (shading::HorizonMethod m : shading::all_horizon_methods()) names.emplace_back(shading::horizon_method_name(m));
+  return names;
+}
+
+// Why `--horizons sweep` marches on this field ("" when it sweeps or was not asked
+// for), with the conditions of shading::uses_sweep.
+std::string sweep_fallback_note(const terrain::HeightField& field, const shading::ProductOptions& o) {
+  if (o.march.method != shading::HorizonMethod::Sweep || shading::uses_sweep(field, o)) return "";
+  if (o.exact) return "--horizons sweep with --exact: the exact march runs instead";
+  const std::string why = o.subsample > 1 ? "--subsample " + std::to_string(o.subsample) + " sub-samples the march"
+                                          : shading::sweep_inapplicable_reason(field, o.march);
+  return "--horizons sweep: " + why + "; the march runs instead";
+}
+
 int run_shade(const ShadeArgs& a) {
   const auto product = shading::parse_product(a.product);
   if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() + ")");
@@ -137,6 +156,8 @@ int run_shade(const ShadeArgs& a) {
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
+  if (const std::string note = sweep_fallback_note(field, opt); !note.empty() && !a.quiet)
+    std::cerr << "skylit: note: " << note << "\n";
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
     opt.lighting = resolved.lighting;
@@ -177,8 +198,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
   cmd->add_option("--quality", args->quality,
                   "Preset from the measured speed/error front: fast | default | high "
-                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--levels/--horizon-max/--sh-order/"
-                  "--nlp-order win")
+                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--levels/--horizon-max/--horizons/"
+                  "--near-steps/--sweep-lines/--sh-order/--nlp-order win")
       ->check(CLI::IsMember({"fast", "default", "high"}))
       ->capture_default_str();
   cmd->add_option("--shading-mode", args->shading_mode,
@@ -208,6 +229,20 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "Maximum of the blocking angles along a ray: smooth (B-spline through them, NS09) | plain")
       ->check(CLI::IsMember({std::string(shading::horizon_max_name(true)), std::string(shading::horizon_max_name(false))}))
       ->capture_default_str();
+  cmd->add_option("--horizons", args->horizons,
+                  "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
+                  "with convex hulls: near-exact horizons in O(N^2) per azimuth; needs a projected grid (one row "
+                  "spacing), the default --max-distance and no --subsample; elsewhere the march runs)")
+      ->check(CLI::IsMember(horizon_method_names()))
+      ->capture_default_str();
+  cmd->add_option("--sweep-lines", args->options.march.sweep_lines,
+                  "Sweep lines per texel across each azimuth (--horizons sweep): a texel's far field comes from "
+                  "a line at most 1/(2N) texel beside its own ray")
+      ->check(CLI::Range(1, 64))->capture_default_str();
+  cmd->add_option("--near-steps", args->options.march.sweep_near_steps,
+                  "Half-texel steps K each texel takes along its own ray before the sweep line's far field "
+                  "(--horizons sweep; K >= twice the DEM's side is the exact march)")
+      ->check(CLI::Range(0, 1 << 16))->capture_default_str();
   cmd->add_option("--kv", args->options.march.k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
   cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
@@ -252,6 +287,9 @@ void add_shade_command(CLI::App& root, Action& run) {
                                                                  : shading::level_sampling(preset.march));
     o.march.smooth_max =
         cmd->count("--horizon-max") ? args->horizon_max == shading::horizon_max_name(true) : preset.march.smooth_max;
+    o.march.method = cmd->count("--horizons") ? *shading::parse_horizon_method(args->horizons) : preset.march.method;
+    if (!cmd->count("--near-steps")) o.march.sweep_near_steps = preset.march.sweep_near_steps;
+    if (!cmd->count("--sweep-lines")) o.march.sweep_lines = preset.march.sweep_lines;
     if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
     if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
     args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);

@@ -20,12 +20,14 @@ void validate(const MarchOptions& o) {
   if (o.sweep_lines < 1) throw std::invalid_argument("sweep: lines per texel must be ≥ 1");
 }
 
+std::vector<HorizonMethod> all_horizon_methods() { return {HorizonMethod::March, HorizonMethod::Sweep}; }
+
 std::string_view horizon_method_name(HorizonMethod method) {
   return method == HorizonMethod::Sweep ? "sweep" : "march";
 }
 
 std::optional<HorizonMethod> parse_horizon_method(std::string_view name) {
-  for (HorizonMethod m : {HorizonMethod::March, HorizonMethod::Sweep})
+  for (HorizonMethod m : all_horizon_methods())
     if (name == horizon_method_name(m)) return m;
   return std::nullopt;
 }

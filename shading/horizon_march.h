@@ -33,6 +33,7 @@
 namespace skylit::shading {
 
 enum class HorizonMethod { March, Sweep };
+std::vector<HorizonMethod> all_horizon_methods();  // march first
 // "march" or "sweep", as `skylit shade --horizons` and the bench name them.
 std::string_view horizon_method_name(HorizonMethod method);
 std::optional<HorizonMethod> parse_horizon_method(std::string_view name);

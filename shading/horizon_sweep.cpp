@@ -5,16 +5,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 namespace skylit::shading {
 
 bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& o) {
+  return sweep_inapplicable_reason(field, o).empty();
+}
+
+std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& o) {
   const auto& dx = field.dx_per_row;
-  if (dx.empty() || std::adjacent_find(dx.begin(), dx.end(), std::not_equal_to<>()) != dx.end()) return false;
-  if (o.max_distance_m <= 0.0) return true;  // the DEM extent
-  return o.max_distance_m >= std::hypot((field.width - 1) * dx.front(), (field.height - 1) * field.dy);
+  if (dx.empty() || std::adjacent_find(dx.begin(), dx.end(), std::not_equal_to<>()) != dx.end())
+    return "the rows' spacings differ (a geographic grid)";
+  if (o.max_distance_m <= 0.0) return "";  // the DEM extent
+  const double diagonal = std::hypot((field.width - 1) * dx.front(), (field.height - 1) * field.dy);
+  if (o.max_distance_m >= diagonal) return "";
+  char text[128];
+  std::snprintf(text, sizeof text, "the maximum distance %g m is below the DEM's diagonal %.1f m", o.max_distance_m,
+                diagonal);
+  return text;
 }
 
 int SweepGeometry::owner(double a, double b) const {

@@ -31,6 +31,7 @@
 #include "shading/horizon_march.h"
 #include "terrain/height_field.h"
 
+#include <string>
 #include <vector>
 
 namespace skylit::shading {
@@ -38,6 +39,9 @@ namespace skylit::shading {
 // True when every row has the same spacing and the maximum distance reaches every
 // texel from every other (MarchOptions::sweep_near_steps, sweep_lines: see there).
 bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& options);
+// Why it is false, for messages ("" when it applies): the rows' spacings differ, or
+// the maximum distance is below the diagonal between the corner texels.
+std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& options);
 
 // Geometry of the sweep lines of one heading (texel units), shared with the GPU.
 struct SweepGeometry {

@@ -7,8 +7,9 @@ namespace {
 // two can never drift apart.
 QualitySettings library_defaults() {
   const ProductOptions d;
-  return {d.march.azimuths,   d.march.k_v,         d.march.level_offset, level_sampling(d.march),
-          d.march.smooth_max, d.shaded.sh_order, d.shaded.nlp_order};
+  return {d.march.azimuths,   d.march.k_v,    d.march.level_offset,     level_sampling(d.march),
+          d.march.smooth_max, d.march.method, d.march.sweep_near_steps, d.march.sweep_lines,
+          d.shaded.sh_order,  d.shaded.nlp_order};
 }
 
 }  // namespace
@@ -54,6 +55,9 @@ void apply_quality(Quality q, ProductOptions& options) {
   options.march.level_offset = s.level_offset;
   set_level_sampling(options.march, s.levels);
   options.march.smooth_max = s.smooth_max;
+  options.march.method = s.horizons;
+  options.march.sweep_near_steps = s.sweep_near_steps;
+  options.march.sweep_lines = s.sweep_lines;
   options.shaded.sh_order = s.sh_order;
   options.shaded.nlp_order = s.nlp_order;
 }

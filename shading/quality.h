@@ -19,14 +19,18 @@ std::vector<Quality> all_qualities();      // fastest first
 std::optional<Quality> parse_quality(std::string_view name);
 
 // The quality knobs a preset sets: horizon azimuths W, pyramid levels per halving k_v,
-// level offset o_v, how steps read heights, the horizon maximum (smooth or plain), SH
-// order n and NLP order N of the shaded visibility.
+// level offset o_v, how steps read heights, the horizon maximum (smooth or plain), how
+// horizons are found (march or sweep) with the sweep's near steps K and lines per
+// texel, SH order n and NLP order N of the shaded visibility.
 struct QualitySettings {
   int azimuths;
   int k_v;
   double level_offset;
   LevelSampling levels;
   bool smooth_max;
+  HorizonMethod horizons;
+  int sweep_near_steps;
+  int sweep_lines;
   int sh_order;
   int nlp_order;
 };

@@ -1,9 +1,11 @@
 // `skylit bench` end to end on a tiny scene: CSV layout, finite errors that fall from
 // the lowest to the highest quality setting, a valid SVG with the Pareto front, and
 // one-line errors that leave no files for bad arguments; on the gpu backend, the clock
-// column and skipped settings; run_scene's median and skipping with a scripted source.
+// column and skipped settings; run_scene's median and skipping with a scripted source;
+// the sweeps' sizes and their horizon-sweep settings.
 #include "cli_test_util.h"
 
+#include "app/bench_output.h"
 #include "app/bench_run.h"
 #include "app/svg_plot.h"
 #include "gpu/gl_context.h"
@@ -66,8 +68,8 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   std::string header;
   std::getline(lines, header);
   EXPECT_EQ(header,
-            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,preset,clock,"
-            "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status");
+            "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,horizons,"
+            "near_steps,sweep_lines,preset,clock,ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status");
   const auto columns = split(header, ',');
   auto col = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
@@ -222,6 +224,62 @@ TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
     return n.find("bspl skipped on scripted: no B-spline wedges") != std::string::npos;
   })) << "the skip is reported";
+}
+
+// The sweeps' sizes (bench_sweep.h), and sweep settings that vary only what changes
+// the sweep's horizons (W, K, lines; n and wedge after them) with s = 1: no two
+// settings compute the same thing, and a march never lends its skyview to a sweep.
+TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
+  using namespace skylit::app;
+  using skylit::shading::HorizonMethod;
+  const skylit::shading::MarchOptions d;
+  EXPECT_EQ(sweep_settings("smoke").size(), 3u);
+  EXPECT_EQ(sweep_settings("default").size(), 21u);
+  EXPECT_EQ(sweep_settings("full").size(), 924u);
+  for (const std::string name : {"default", "full"}) {
+    const auto list = sweep_settings(name);
+    int sweeps = 0;
+    for (std::size_t a = 0; a < list.size(); ++a) {
+      const BenchSetting& s = list[a];
+      const auto o = options_for(s, 1);
+      EXPECT_EQ(o.march.method, s.horizons);
+      EXPECT_EQ(o.march.sweep_near_steps, s.near_steps);
+      EXPECT_EQ(o.march.sweep_lines, s.sweep_lines);
+      if (s.horizons == HorizonMethod::Sweep) {
+        ++sweeps;
+        EXPECT_EQ(s.subsample, 1) << s.label();  // the sweep does not sub-sample
+        EXPECT_TRUE(s.k_v == d.k_v && s.level_offset == d.level_offset && s.smooth_max == d.smooth_max &&
+                    s.levels == skylit::shading::level_sampling(d))
+            << s.label();
+        EXPECT_NE(s.label().find(" sweep K" + std::to_string(s.near_steps) + " L" + std::to_string(s.sweep_lines)),
+                  std::string::npos)
+            << s.label();
+      } else {
+        EXPECT_TRUE(s.near_steps == d.sweep_near_steps && s.sweep_lines == d.sweep_lines) << s.label();
+      }
+      for (std::size_t b = 0; b < a; ++b) EXPECT_FALSE(list[b] == s) << name << ": " << s.label();
+    }
+    // default: (K, lines) = (2, 1), (4, 2), (8, 3); full: those × W × n × wedge, plus W × K × lines.
+    EXPECT_EQ(sweeps, name == "default" ? 3 : 4 * 3 * 3 * 2 + 4 * 3 * 3 - 4 * 3) << name;
+  }
+  BenchSetting march = sweep_settings("smoke")[1], sweep = march;
+  sweep.horizons = HorizonMethod::Sweep;
+  EXPECT_FALSE(march.same_march(sweep));
+  BenchSetting fewer_lines = sweep;
+  fewer_lines.sweep_lines = 1;
+  EXPECT_FALSE(sweep.same_march(fewer_lines));
+
+  BenchRow row{"s", "8", "reference", "wall", fewer_lines, {1, 1, 1}, 1, {0, 0}, {0, 0}, std::nullopt};
+  std::stringstream csv(csv_text({row}));
+  std::string header, line;
+  std::getline(csv, header);
+  std::getline(csv, line);
+  const auto columns = split(header, ','), cells = split(line, ',');
+  ASSERT_EQ(cells.size(), columns.size());
+  auto cell = [&](const std::string& c) { return cells[std::find(columns.begin(), columns.end(), c) - columns.begin()]; };
+  EXPECT_EQ(cell("horizons"), "sweep");
+  EXPECT_EQ(cell("near_steps"), std::to_string(d.sweep_near_steps));
+  EXPECT_EQ(cell("sweep_lines"), "1");
 }
 
 TEST(GpuTimer, MissingWhenItReadsZeroAgainstTheWallClock) {

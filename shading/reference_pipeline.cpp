@@ -60,9 +60,12 @@ bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options
          sweep_applicable(field, options.march);
 }
 
-HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options)
-    : field_(field), sweep_(uses_sweep(field, options)) {
+HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options) : field_(field) {
   validate(options.march);
+  if (uses_sweep(field, options)) {  // no pyramid: HorizonSource sweeps; the floor is the half texel's
+    exact_ = ExactMarch{0.5, options.march.max_distance_m, options.march.curvature};
+    return;
+  }
   if (!options.exact) {
     marcher_ = std::make_unique<HorizonMarcher>(field, options.march);
     return;
@@ -78,9 +81,7 @@ double HorizonOracle::max_elevation(int i, int j, Heading u) const {
 double HorizonOracle::ground_floor(int j, Heading u) const {
   const EarthCurvature& c = marcher_ ? marcher_->options().curvature : exact_.curvature;
   if (!c.enabled) return 0.0;
-  const double t1 = sweep_     ? exact_step_length(field_, j, u, 0.5)
-                    : marcher_ ? marcher_->distance(0)
-                               : exact_step_length(field_, j, u, exact_.step_texels);
+  const double t1 = marcher_ ? marcher_->distance(0) : exact_step_length(field_, j, u, exact_.step_texels);
   return -std::atan(t1 / (2.0 * c.effective_radius()));
 }
 

@@ -31,8 +31,9 @@ class HorizonOracle {
  public:
   HorizonOracle(const terrain::HeightField& field, const ProductOptions& options);
 
-  bool exact() const { return !marcher_; }
   // Largest elevation angle (rad) along u from texel (i, j); −∞ if none on the grid.
+  // Where uses_sweep: the exact march the sweep approximates (compute_product takes the
+  // sweep's own horizons, which need the whole field's sweep lines).
   double max_elevation(int i, int j, Heading u) const;
   // The receiver's own ground level seen at the first march distance t₁ (the floor of
   // the `horizon` product): 0, or −atan(t₁/(2R_eff)) with Earth curvature. The sweep's
@@ -41,8 +42,7 @@ class HorizonOracle {
 
  private:
   const terrain::HeightField& field_;
-  bool sweep_ = false;
-  std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march
+  std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march (or the sweep's half texel)
   ExactMarch exact_;
 };
 

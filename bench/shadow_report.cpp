@@ -4,7 +4,8 @@
 // mean |error|, RMSE, the share of texels whose error exceeds 0.5 (a lit/shadowed
 // flip), the bias and the penumbra error, for the horizon marched in the sun's azimuth
 // (a) and interpolated from W product azimuths (b), each with the sky's pyramid march
-// and with the sun's level-0 march (docs/accuracy.md (sun shadows)).
+// and with the sun's level-0 march, and swept in the sun's azimuth (c; projected DEMs,
+// the geographic one marches) (docs/accuracy.md (sun shadows)).
 //
 // Usage: shadow_report [crop_px]   (default 256; DEMs from SKYLIT_SHARED_DIR/dem)
 #include "shading/sun_light.h"
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace skylit;
@@ -115,6 +117,15 @@ std::vector<Method> methods() {
   for (int w : {16, 32, 64}) m.push_back({"(b) W=" + std::to_string(w) + ", sky march", interpolated(sky, w), true});
   for (int w : {16, 32, 64})
     m.push_back({"(b) W=" + std::to_string(w) + ", level 0, k_v=32", interpolated(shading::sun_march_options(), w), true});
+  // (c) the horizon sweep in the sun's azimuth (projected DEMs; geographic ones march).
+  for (const auto& [k, lines, core] : {std::tuple{4, 1, true}, std::tuple{4, 2, true}, std::tuple{8, 3, false}}) {
+    SunShadowOptions o;
+    o.horizon = SunHorizon::Swept;
+    o.march.method = shading::HorizonMethod::Sweep;
+    o.march.sweep_near_steps = k;
+    o.march.sweep_lines = lines;
+    m.push_back({"(c) sweep K " + std::to_string(k) + ", " + std::to_string(lines) + " line(s), A_s only", o, core});
+  }
   SunShadowOptions dense3;
   dense3.horizon = SunHorizon::Exact;
   dense3.exact_columns = 3;

@@ -187,29 +187,46 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   }
 }
 
+// SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
+// horizon_sweep.comp on the resident heights and row spacings (one layer).
+TextureArray sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
+                            const shading::ProductOptions& o, shading::Heading u, const ResidentField& resident) {
+  const BufferTexture heights_tex(resident.heights()), row_dx_tex(resident.row_dx());
+  heights_tex.bind_sampler(kHeights);
+  row_dx_tex.bind_sampler(kRowDx);
+  TextureArray far(field.width, field.height, 1);
+  sweep_pass(sweep, field, shading::sun_shadow_options(o).march, {u}, far);
+  return far;
+}
+
 // Stage 0 (lit products with a sun, and shadow): sun_shadow.comp over the whole field
 // into `shadow` (4 B/texel), in row chunks of ≤ `invocations` texels. Heights, row
 // spacing and the valid mask must be bound; the step schedule goes to `schedule_buf`
 // (re-uploaded only when it changed: `uploaded` grows by its bytes). Returns the GPU
 // time (ms).
 double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, const shading::ProductOptions& o,
-                std::size_t invocations, ResidentTable& schedule_buf, std::size_t& uploaded, Buffer& shadow) {
-  const shading::MarchSchedule steps = shading::march_schedule(field, shading::sun_shadow_options(o).march);
-  std::vector<float> schedule;
-  for (double t : steps.distances) {
-    schedule.push_back(static_cast<float>(t));
-    schedule.push_back(0.0f);
-  }
+                std::size_t invocations, ResidentTable& schedule_buf, std::size_t& uploaded, Buffer& shadow,
+                const TextureArray* far) {
   check_storage_size(field.size() * sizeof(float), "GPU pipeline: the sun shadow");
-  uploaded += schedule_buf.assign(schedule);
   shadow = Buffer(field.size() * sizeof(float));
-  schedule_buf.buffer().bind_storage(kSunSchedule);
   shadow.bind_storage(kShadow);
   set_grid_uniforms(sun, field);
-  sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
-  // The highest height with the march's rounding slack: bilinear rises never exceed it
-  // in float (sun_shadow.comp's early exit).
-  sun.set_uniform("max_height", static_cast<float>(shading::march_exit_height_bound(field.heights)));
+  if (far) {  // SunHorizon::Swept: the sun's far slopes, swept already
+    far->bind_sampler(kFar);
+  } else {
+    const shading::MarchSchedule steps = shading::march_schedule(field, shading::sun_shadow_options(o).march);
+    std::vector<float> schedule;
+    for (double t : steps.distances) {
+      schedule.push_back(static_cast<float>(t));
+      schedule.push_back(0.0f);
+    }
+    uploaded += schedule_buf.assign(schedule);
+    schedule_buf.buffer().bind_storage(kSunSchedule);
+    sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
+    // The highest height with the march's rounding slack: bilinear rises never exceed it
+    // in float (sun_shadow.comp's early exit).
+    sun.set_uniform("max_height", static_cast<float>(shading::march_exit_height_bound(field.heights)));
+  }
   const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
   GpuTimer timer;
   double ms = 0.0;
@@ -247,10 +264,42 @@ struct GpuProductPipeline::Impl {
   std::optional<ComputeProgram> march_one_dx;
   GlslDefines march_defines;
   // The sweep (shading/horizon_sweep.h), compiled at the first field that uses it.
-  std::optional<ComputeProgram> sweep, near;
+  std::optional<ComputeProgram> near;
   std::vector<shading::Heading> band_headings;
   std::optional<ComputeProgram> products;  // surface_products.comp
-  std::optional<ComputeProgram> sun;       // sun_shadow.comp: shadow, and lit products with a sun
+  // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
+  // (SUN_SWEPT). Compiled at first use.
+  std::optional<ComputeProgram> sun[2];
+  GlslDefines sun_defines;
+  shading::Heading sun_heading;
+  std::vector<std::pair<std::string, double>> sun_uniforms;  // float uniforms, when active
+  const ComputeProgram& sun_kernel(bool swept) {
+    if (!sun[swept]) {
+      GlslDefines d = sun_defines;
+      d.set("SUN_SWEPT", swept ? 1 : 0);
+      sun[swept].emplace(ComputeProgram::from_embedded("sun_shadow.comp", d));
+      for (const auto& [name, value] : sun_uniforms)
+        if (sun[swept]->has_uniform(name)) sun[swept]->set_uniform(name, static_cast<float>(value));
+    }
+    return *sun[swept];
+  }
+  // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
+  // steps and lines), compiled at first use.
+  std::optional<ComputeProgram> sweeps[2];
+  const ComputeProgram& sweep_kernel(const shading::ProductOptions& o, bool sun) {
+    if (!sweeps[sun]) {
+      const shading::MarchOptions m = sun ? shading::sun_shadow_options(o).march : o.march;
+      GlslDefines d = common_defines(azimuths, o);
+      d.set("RAY_TEXTURES", 1)
+          .set("NEAR_STEPS", m.sweep_near_steps)
+          .set("LINES_PER_TEXEL", m.sweep_lines)
+          .set("SWEEP_LOCAL_SIZE", kSweepLocalSize)
+          .set("HULL_IMAGE_UNIT", kHullImageUnit)
+          .set("FAR_IMAGE_UNIT", kFarImageUnit);
+      sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
+    }
+    return *sweeps[sun];
+  }
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
   // only its changed rows; the schedules only when they change.
@@ -287,26 +336,29 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("VALID_BINDING", kValid)
         .set("SCHEDULE_BINDING", kSunSchedule)
         .set("SHADOW_BINDING", kShadow)
-        .set("DISC_RADIUS", disc_radius);
-    k.sun.emplace(ComputeProgram::from_embedded("sun_shadow.comp", sun));
+        .set("DISC_RADIUS", disc_radius)
+        .set("NEAR_STEPS", shading::sun_shadow_options(options).march.sweep_near_steps)
+        .set("FAR_BINDING", kFar);
+    k.sun_defines = sun;
+    k.sun_heading = u;
     // The sun as uniforms: the kernel's source, hence the driver's compiled-kernel
     // cache entry, is the same for every sun position.
-    const ComputeProgram& p = *k.sun;
-    p.set_uniform("sun_east", static_cast<float>(u.east));
-    p.set_uniform("sun_north", static_cast<float>(u.north));
-    p.set_uniform("sun_elevation", static_cast<float>(elevation));
-    p.set_uniform("sun_sin_az", static_cast<float>(std::sin(azimuth)));
-    p.set_uniform("sun_cos_az", static_cast<float>(std::cos(azimuth)));
-    p.set_uniform("sun_sin_el", static_cast<float>(std::sin(elevation)));
-    p.set_uniform("sun_cos_el", static_cast<float>(std::cos(elevation)));
-    // sun_shadow.comp's early exit: the slopes of the disc frame's edges y = ±2 (its
-    // clip square), widened by 1e-4 relative so float rounding never exits early.
+    auto& uniforms = k.sun_uniforms;
+    uniforms = {{"sun_east", u.east},
+                {"sun_north", u.north},
+                {"sun_elevation", elevation},
+                {"sun_sin_az", std::sin(azimuth)},
+                {"sun_cos_az", std::cos(azimuth)},
+                {"sun_sin_el", std::sin(elevation)},
+                {"sun_cos_el", std::cos(elevation)}};
+    // sun_shadow.comp's early exit (the march): the slopes of the disc frame's edges
+    // y = ±2 (its clip square), widened by 1e-4 relative so float rounding never exits early.
     const double top = elevation + 2.0 * disc_radius, bottom = elevation - 2.0 * disc_radius;
     const double inf = std::numeric_limits<float>::infinity(), near_vertical = std::numbers::pi / 2 - 1e-3;
-    const double hidden = top < near_vertical ? std::tan(top) * (1.0 + 1e-4) + 1e-4 : inf;
-    const double open = bottom > -near_vertical ? std::tan(bottom) - 1e-4 * std::abs(std::tan(bottom)) - 1e-4 : -inf;
-    p.set_uniform("hidden_slope", static_cast<float>(hidden));
-    p.set_uniform("open_slope", static_cast<float>(open));
+    uniforms.emplace_back("hidden_slope", top < near_vertical ? std::tan(top) * (1.0 + 1e-4) + 1e-4 : inf);
+    uniforms.emplace_back("open_slope",
+                          bottom > -near_vertical ? std::tan(bottom) - 1e-4 * std::abs(std::tan(bottom)) - 1e-4 : -inf);
+    k.sun_kernel(false);  // the march's variant now; the sweep's at its first field
   }
   if (product == Product::Shadow) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);
@@ -417,7 +469,11 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     k.field.valid().bind_storage(kValid);
     t.upload_ms = ms_since(upload_start);
     Buffer shadow;
-    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
+    const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
+    const TextureArray far = swept ? sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field)
+                                   : TextureArray();
+    t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
+                        t.uploaded_bytes, shadow, swept ? &far : nullptr);
     shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
     shadow.download(out.data.data(), texels * sizeof(float));
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
@@ -534,8 +590,15 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   Buffer shadow;
-  if (k.sun)
-    t.sun_ms = sun_pass(*k.sun, field, mOptions, mInvocationsPerDispatch, k.sun_schedule, t.uploaded_bytes, shadow);
+  if (k.sun[0]) {
+    const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
+    const TextureArray far = swept ? sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field)
+                                   : TextureArray();
+    t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
+                        t.uploaded_bytes, shadow, swept ? &far : nullptr);
+    heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
+    row_dx_tex.bind_sampler(kRowDx);
+  }
 
   // Stage 2: the march (with the sweep: the sweep over the whole field, then per chunk
   // the near steps). Stage 3: the product. Row chunks bound a dispatch's length.
@@ -543,19 +606,17 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
                                                              std::not_equal_to<>()) == field.dx_per_row.end();
   TextureArray far;
   if (sweep) {
-    if (!k.sweep) {
+    if (!k.near) {
       GlslDefines d = common_defines(k.azimuths, mOptions);
-      d.set("RAY_TEXTURES", 1).set("NEAR_STEPS", mOptions.march.sweep_near_steps).set("FAR_BINDING", kFar)
-          .set("LINES_PER_TEXEL", mOptions.march.sweep_lines);
-      GlslDefines near = d;
-      near.set("ONE_DX", 1);  // the sweep's fields have one row spacing
-      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", near));
-      d.set("SWEEP_LOCAL_SIZE", kSweepLocalSize).set("HULL_IMAGE_UNIT", kHullImageUnit).set("FAR_IMAGE_UNIT", kFarImageUnit);
-      k.sweep.emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
+      d.set("RAY_TEXTURES", 1)
+          .set("ONE_DX", 1)  // the sweep's fields have one row spacing
+          .set("NEAR_STEPS", mOptions.march.sweep_near_steps)
+          .set("FAR_BINDING", kFar);
+      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
     }
     far = TextureArray(w, h, bands);
     const auto sweep_start = Clock::now();
-    sweep_pass(*k.sweep, field, mOptions.march, k.band_headings, far);
+    sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far);
     glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
     t.march_ms += ms_since(sweep_start);
     far.bind_sampler(kFar);

@@ -382,6 +382,9 @@ SunShadowOptions sun_shadow_options(const ProductOptions& o) {
   if (o.exact) {
     s.horizon = SunHorizon::Exact;
     s.exact = ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
+  } else if (o.march.method == HorizonMethod::Sweep) {  // the sun's own sweep knobs; Marched where it cannot
+    s.horizon = SunHorizon::Swept;
+    s.march.method = HorizonMethod::Sweep;
   }
   return s;
 }

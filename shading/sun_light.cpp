@@ -2,6 +2,7 @@
 
 #include "shading/azimuth.h"
 #include "shading/horizon_ray.h"
+#include "shading/horizon_sweep.h"
 #include "shading/reference_pipeline.h"
 #include "shading/sun_disc.h"
 #include "shading/surface_normals.h"
@@ -87,6 +88,8 @@ MarchOptions sun_march_options() {
   o.k_v = 32;
   o.use_pyramid = false;
   o.smooth_max = false;
+  o.sweep_near_steps = 8;
+  o.sweep_lines = 3;
   return o;
 }
 
@@ -102,6 +105,10 @@ void validate(const SunShadowOptions& o) {
   }
 }
 
+bool sun_sweeps(const terrain::HeightField& field, const SunShadowOptions& options) {
+  return options.horizon == SunHorizon::Swept && sweep_applicable(field, options.march);
+}
+
 glm::dvec3 sun_direction(SunAngles sun) {
   const double ce = std::cos(sun.elevation);
   return {ce * std::sin(sun.azimuth), ce * std::cos(sun.azimuth), std::sin(sun.elevation)};
@@ -115,14 +122,23 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
   const double r = options.radius, e_s = sun.elevation;
   // Azimuth half-width of the disc: column x sits at A_s + x·half_width.
   const double half_width = r / disc_azimuth_scale(e_s, r);
+  // Swept where the sweep applies (the sun's far slopes first, one heading), else Marched.
+  const bool swept = sun_sweeps(field, options);
+  const SunHorizon horizon = options.horizon == SunHorizon::Swept && !swept ? SunHorizon::Marched : options.horizon;
   std::unique_ptr<HorizonMarcher> marcher;
-  if (options.horizon != SunHorizon::Exact) marcher = std::make_unique<HorizonMarcher>(field, options.march);
+  if (horizon == SunHorizon::Marched || horizon == SunHorizon::Interpolated)
+    marcher = std::make_unique<HorizonMarcher>(field, options.march);
+  std::vector<float> far;
+  if (swept) far = sweep_far_slopes(field, heading_from_geographic(sun.azimuth), options.march);
 
   std::vector<float> out(field.size(), std::numeric_limits<float>::quiet_NaN());
   auto march_at = [&](int i, int j, double x) {
     const Heading u = heading_from_geographic(sun.azimuth + x * half_width);
-    return finite_elevation(options.horizon == SunHorizon::Exact ? exact_max_elevation(field, i, j, u, options.exact)
-                                                                 : marched_elevation(field, *marcher, i, j, u));
+    if (horizon == SunHorizon::Swept)  // x = 0 only
+      return finite_elevation(sweep_max_elevation(field, i, j, u, far[static_cast<std::size_t>(j) * field.width + i],
+                                                  options.march));
+    return finite_elevation(horizon == SunHorizon::Exact ? exact_max_elevation(field, i, j, u, options.exact)
+                                                         : marched_elevation(field, *marcher, i, j, u));
   };
 
   parallel_rows(field.height, options.threads, [&](int j) {
@@ -144,7 +160,13 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
         c.y[c.n] = (sigma - e_s) / r;
         ++c.n;
       };
-      switch (options.horizon) {
+      switch (horizon) {
+        case SunHorizon::Swept: {  // a level line across the disc, as Marched without disc_slope
+          const double s = march_at(i, j, 0.0);
+          push(-1.0, s);
+          push(1.0, s);
+          break;
+        }
         case SunHorizon::Marched:
           if (options.disc_slope) {
             for (double x : {-1.0, 0.0, 1.0}) push(x, march_at(i, j, x));

@@ -13,7 +13,10 @@
 //                   A_k = k·2π/W that bracket each column (what the W-azimuth sky
 //                   march already computes);
 //  * Exact        — the dense half-texel march (horizon_exact.h) at `exact_columns`
-//                   azimuths across the disc: the ground truth.
+//                   azimuths across the disc: the ground truth;
+//  * Swept        — the horizon sweep (horizon_sweep.h) in the exact sun azimuth, with
+//                   the march options' near steps and lines (sun_march_options': 8, 3),
+//                   where it applies (sun_sweeps); elsewhere Marched.
 // Horizons are raw maxima: there is no floor at the astronomical horizon, so a ridge
 // top sees a sun slightly below 0°; its DNI is 0 there anyway (atmosphere.h).
 #pragma once
@@ -30,12 +33,14 @@
 
 namespace skylit::shading {
 
-enum class SunHorizon { Marched, Interpolated, Exact };
+enum class SunHorizon { Marched, Interpolated, Exact, Swept };
 
 // The march the sun needs (docs/accuracy.md (sun shadows)): level-0 bilinear heights at
 // k_v = 32 steps per halving of distance, plain max. The sky's march (B-spline pyramid,
 // k_v = 4, smoothed max) lowers ridges by more than the disc's radius: ~5% of low-sun
 // texels flip from shadow to lit. The sun marches 1 ray, not W, so it can afford this.
+// Likewise its sweep (Swept): K = 8 near steps, 3 lines per texel (0.05 % flips where
+// the sky's K 4, 1 line gives 0.30 %).
 MarchOptions sun_march_options();
 
 struct SunShadowOptions {
@@ -50,6 +55,10 @@ struct SunShadowOptions {
   double radius = sky::kSunAngularRadius;  // angular radius of the disc (rad)
   unsigned threads = 0;        // workers over rows; 0 = hardware concurrency
 };
+
+// Whether shadow_fraction_field sweeps the sun's horizon on `field` (Swept, and the
+// sweep applies to it); every backend decides by this.
+bool sun_sweeps(const terrain::HeightField& field, const SunShadowOptions& options);
 
 // Throws std::invalid_argument on bad options (radius ∉ (0, π/4), columns ∉ [2, 65],
 // bad march options).

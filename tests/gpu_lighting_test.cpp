@@ -22,6 +22,8 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
+#include "shading/sun_light.h"
+#include "shading/reference_pipeline.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "shading/shading_modes.h"
@@ -193,6 +195,25 @@ TEST_F(GpuLightingTest, IrradianceAndLitShadedMatchReference) {
       const ProductBands shaded = expect_lit_matches(Product::Shaded, o, f.synthetic, dem, label);
       EXPECT_EQ(shaded.bands, sky == "preetham" ? 3 : 1);
     }
+}
+
+// The sweep (shading::SunHorizon::Swept for the sun, the sky's sweep for the sky) on the
+// projected synthetic field; the geographic crop marches the sun in both.
+TEST_F(GpuLightingTest, SweptSunAndSkyMatchReference) {
+  const Fields f;
+  for (double elevation : {10.0, 45.0}) {
+    ProductOptions o = lit_options(135.0, elevation, "uniform");
+    o.march.method = shading::HorizonMethod::Sweep;
+    ASSERT_TRUE(shading::sun_sweeps(f.synthetic, shading::sun_shadow_options(o)));
+    const std::string label = "swept, sun 135/" + std::to_string(static_cast<int>(elevation));
+    const ProductBands g = expect_lit_matches(Product::Shadow, o, f.synthetic, f.dem_or_null(), label);
+    if (elevation == 10.0) {
+      const auto [lo, hi] = std::minmax_element(g.data.begin(), g.data.begin() + 1000);
+      EXPECT_EQ(*lo, 0.0f);
+      EXPECT_EQ(*hi, 1.0f);
+    }
+    expect_lit_matches(Product::Shaded, o, f.synthetic, nullptr, label);
+  }
 }
 
 // Sun below the horizon: no direct light (DNI 0, no shadow pass), the twilight sky only.

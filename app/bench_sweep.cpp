@@ -23,11 +23,11 @@ const std::vector<Wedge> kWedges = {Wedge::Linear, Wedge::BSpline};
 using Levels = shading::LevelSampling;
 const std::vector<Levels> kLevels = {Levels::None, Levels::Bilinear, Levels::BSpline};
 const std::vector<bool> kSmoothMax = {false, true};
-// The sweep's near steps K and lines per texel: crossed in the full sweep, and three
+// The sweep's near steps K and lines per texel: crossed in the full sweep, and four
 // settings along both, cheapest first, that the other sweeps take.
 const std::vector<int> kNearSteps = {2, 4, 8};
 const std::vector<int> kSweepLines = {1, 2, 3};
-const std::vector<std::pair<int, int>> kSweeps = {{2, 1}, {4, 2}, {8, 3}};  // (K, lines)
+const std::vector<std::pair<int, int>> kSweeps = {{2, 1}, {4, 1}, {4, 2}, {8, 3}};  // (K, lines)
 
 // A march; level sampling and maximum default to the library's (MarchOptions).
 BenchSetting make_setting(int w, int k_v, double o_v, int n, int s, Wedge wedge,
@@ -67,31 +67,39 @@ BenchSetting lowest() {
   return make_setting(kAzimuths.front(), kKv.front(), kLevelOffsets.front(), kShOrders.front(), kSubsamples.front(),
                       kWedges.front(), kLevels.front(), kSmoothMax.front());
 }
+// The sweep at its most: the sweep beats every march on the fields it applies to.
 BenchSetting highest() {
-  return make_setting(kAzimuths.back(), kKv.back(), kLevelOffsets.back(), kShOrders.back(), kSubsamples.back(),
-                      kWedges.back(), kLevels.back(), kSmoothMax.back());
+  return sweep_setting(kAzimuths.back(), kShOrders.back(), kWedges.back(), kNearSteps.back(), kSweepLines.back());
 }
 
 std::vector<BenchSetting> default_sweep() {
+  // The default preset (a sweep) and the march at its defaults, each with one knob
+  // changed: W, n and wedge on both; the pyramid knobs and s on the march only (the
+  // sweep ignores them); K and lines on the sweep at the fast and default W.
   const BenchSetting d = preset_setting(shading::Quality::Default);
-  std::vector<BenchSetting> list = {lowest()};
-  // d with one knob changed; N = 2n as in the grid.
-  auto around = [&](auto change) {
-    BenchSetting s = d;
+  const BenchSetting dm = make_setting(d.azimuths, d.k_v, d.level_offset, d.sh_order, d.subsample, d.wedge, d.levels,
+                                 d.smooth_max);
+  std::vector<BenchSetting> list = {lowest(), d, dm};
+  // base with one knob changed; N = 2n as in the grid.
+  auto around = [&](const BenchSetting& base, auto change) {
+    BenchSetting s = base;
     change(s);
     s.nlp_order = 2 * s.sh_order;
     s.preset.reset();
     add_unique(list, s);
   };
-  for (int w : kAzimuths) around([&](BenchSetting& s) { s.azimuths = w; });
-  for (int k : kKv) around([&](BenchSetting& s) { s.k_v = k; });
-  for (double o : kLevelOffsets) around([&](BenchSetting& s) { s.level_offset = o; });
-  for (int n : kShOrders) around([&](BenchSetting& s) { s.sh_order = n; });
-  for (int sub : kSubsamples) around([&](BenchSetting& s) { s.subsample = sub; });
-  for (Wedge e : kWedges) around([&](BenchSetting& s) { s.wedge = e; });
-  for (Levels l : kLevels) around([&](BenchSetting& s) { s.levels = l; });
-  for (bool m : kSmoothMax) around([&](BenchSetting& s) { s.smooth_max = m; });
-  for (auto [k, lines] : kSweeps) add_unique(list, sweep_setting(d.azimuths, d.sh_order, d.wedge, k, lines));
+  for (const BenchSetting* base : {&d, &dm}) {
+    for (int w : kAzimuths) around(*base, [&](BenchSetting& s) { s.azimuths = w; });
+    for (int n : kShOrders) around(*base, [&](BenchSetting& s) { s.sh_order = n; });
+    for (Wedge e : kWedges) around(*base, [&](BenchSetting& s) { s.wedge = e; });
+  }
+  for (int k : kKv) around(dm, [&](BenchSetting& s) { s.k_v = k; });
+  for (double o : kLevelOffsets) around(dm, [&](BenchSetting& s) { s.level_offset = o; });
+  for (int sub : kSubsamples) around(dm, [&](BenchSetting& s) { s.subsample = sub; });
+  for (Levels l : kLevels) around(dm, [&](BenchSetting& s) { s.levels = l; });
+  for (bool m : kSmoothMax) around(dm, [&](BenchSetting& s) { s.smooth_max = m; });
+  for (int w : {preset_setting(shading::Quality::Fast).azimuths, d.azimuths})  // the fast and default W
+    for (auto [k, lines] : kSweeps) add_unique(list, sweep_setting(w, d.sh_order, d.wedge, k, lines));
   add_unique(list, highest());
   return list;
 }

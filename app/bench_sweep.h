@@ -59,12 +59,13 @@ struct BenchSetting {
 std::string_view wedge_name(sh::WedgeInterpolation w);
 
 // Names accepted by --sweep: "smoke" (the lowest, default and highest setting, for
-// tests), "default" (one knob at a time around the library defaults, the two extreme
-// corners, three sweeps (K, lines) and the presets: 21, minutes at 128² on 2 cores),
-// "full" (every combination of W, k_v, o_v, n, s and wedge, plus every march (W, k_v,
-// o_v, levels, max) at the default n, s and wedge, plus the three sweeps crossed with
-// W, n and wedge and every sweep (W, K, lines) at the default n and wedge, plus the
-// presets: 924, for GPU machines). Settings equal to a preset carry it.
+// tests), "default" (one knob at a time around the default sweep and the default march,
+// the march's pyramid knobs and s on the march only, four sweeps (K, lines) at the fast
+// and default W, the two extreme corners and the presets: 32, minutes at 128² on 2
+// cores), "full" (every combination of W, k_v, o_v, n, s and wedge, plus every march
+// (W, k_v, o_v, levels, max) at the default n, s and wedge, plus the four sweeps crossed
+// with W, n and wedge and every sweep (W, K, lines) at the default n and wedge, plus the
+// presets: 945, for GPU machines). Settings equal to a preset carry it.
 std::vector<std::string> sweep_names();
 // Throws std::invalid_argument naming the valid sweeps.
 std::vector<BenchSetting> sweep_settings(std::string_view name);

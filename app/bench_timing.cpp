@@ -12,6 +12,20 @@
 #include <time.h>
 
 namespace skylit::app {
+
+// Options that give the same compiled pipeline: the bench varies only these fields.
+bool same_pipeline_options(const shading::ProductOptions& a, const shading::ProductOptions& b) {
+  return a.exact == b.exact && a.march.azimuths == b.march.azimuths && a.march.k_v == b.march.k_v &&
+         a.march.level_offset == b.march.level_offset && a.march.use_pyramid == b.march.use_pyramid &&
+         a.march.level_interpolation == b.march.level_interpolation && a.march.smooth_max == b.march.smooth_max &&
+         a.march.method == b.march.method && a.march.sweep_near_steps == b.march.sweep_near_steps &&
+         a.march.sweep_lines == b.march.sweep_lines &&
+         a.shaded.sh_order == b.shaded.sh_order &&
+         a.shaded.nlp_order == b.shaded.nlp_order && a.shaded.wedge == b.shaded.wedge &&
+         a.subsample == b.subsample && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
+         a.exact_options.step_texels == b.exact_options.step_texels;
+}
+
 namespace {
 
 using shading::Product;
@@ -63,16 +77,6 @@ class ReferenceSource final : public TimingSource {
   bool cpu_;
 };
 
-// Options that give the same compiled pipeline: the bench varies only these fields.
-bool same_pipeline_options(const shading::ProductOptions& a, const shading::ProductOptions& b) {
-  return a.exact == b.exact && a.march.azimuths == b.march.azimuths && a.march.k_v == b.march.k_v &&
-         a.march.level_offset == b.march.level_offset && a.march.use_pyramid == b.march.use_pyramid &&
-         a.march.level_interpolation == b.march.level_interpolation && a.march.smooth_max == b.march.smooth_max &&
-         a.shaded.sh_order == b.shaded.sh_order &&
-         a.shaded.nlp_order == b.shaded.nlp_order && a.shaded.wedge == b.shaded.wedge &&
-         a.subsample == b.subsample && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
-         a.exact_options.step_texels == b.exact_options.step_texels;
-}
 
 // One context for the run; pipelines compiled once per (product, setting) and kept
 // while the sweep is on that setting. The cache is small because a pipeline keeps its

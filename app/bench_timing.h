@@ -58,4 +58,8 @@ std::unique_ptr<TimingSource> make_timing_source(const std::string& backend, con
 // llvmpipe runs compute dispatches on the CPU outside its GL_TIME_ELAPSED window.
 bool gpu_timer_missing(const std::vector<FrameTime>& runs);
 
+// Whether two settings' options give the same compiled GPU pipeline (the fields the
+// bench varies): the GPU source reuses a pipeline only then.
+bool same_pipeline_options(const shading::ProductOptions& a, const shading::ProductOptions& b);
+
 }  // namespace skylit::app

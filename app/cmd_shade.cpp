@@ -47,6 +47,7 @@ struct ShadeArgs {
   std::string levels{shading::level_sampling_name(shading::level_sampling(shading::MarchOptions{}))};
   std::string horizon_max{shading::horizon_max_name(shading::MarchOptions{}.smooth_max)};
   std::string horizons{shading::horizon_method_name(shading::MarchOptions{}.method)};
+  bool horizons_given = false;  // --horizons on the command line (the fallback note is for it)
   bool no_curvature = false;
   std::string backend = default_backend();
   unsigned threads = 0;
@@ -129,9 +130,9 @@ std::vector<std::string> horizon_method_names() {
 }
 
 // Why `--horizons sweep` marches on this field ("" when it sweeps or was not asked
-// for), with the conditions of shading::uses_sweep.
-std::string sweep_fallback_note(const terrain::HeightField& field, const shading::ProductOptions& o) {
-  if (o.march.method != shading::HorizonMethod::Sweep || shading::uses_sweep(field, o)) return "";
+// for), with the conditions of shading::uses_sweep. The default sweep falls back quietly.
+std::string sweep_fallback_note(const terrain::HeightField& field, const shading::ProductOptions& o, bool asked) {
+  if (!asked || o.march.method != shading::HorizonMethod::Sweep || shading::uses_sweep(field, o)) return "";
   if (o.exact) return "--horizons sweep with --exact: the exact march runs instead";
   const std::string why = o.subsample > 1 ? "--subsample " + std::to_string(o.subsample) + " sub-samples the march"
                                           : shading::sweep_inapplicable_reason(field, o.march);
@@ -156,7 +157,7 @@ int run_shade(const ShadeArgs& a) {
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
-  if (const std::string note = sweep_fallback_note(field, opt); !note.empty() && !a.quiet)
+  if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
@@ -232,7 +233,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--horizons", args->horizons,
                   "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
                   "with convex hulls: near-exact horizons in O(N^2) per azimuth; needs a projected grid (one row "
-                  "spacing), the default --max-distance and no --subsample; elsewhere the march runs)")
+                  "spacing), the default --max-distance and no --subsample; elsewhere the march runs, with a note "
+                  "when sweep was asked for)")
       ->check(CLI::IsMember(horizon_method_names()))
       ->capture_default_str();
   cmd->add_option("--sweep-lines", args->options.march.sweep_lines,
@@ -287,7 +289,8 @@ void add_shade_command(CLI::App& root, Action& run) {
                                                                  : shading::level_sampling(preset.march));
     o.march.smooth_max =
         cmd->count("--horizon-max") ? args->horizon_max == shading::horizon_max_name(true) : preset.march.smooth_max;
-    o.march.method = cmd->count("--horizons") ? *shading::parse_horizon_method(args->horizons) : preset.march.method;
+    args->horizons_given = cmd->count("--horizons") > 0;
+    o.march.method = args->horizons_given ? *shading::parse_horizon_method(args->horizons) : preset.march.method;
     if (!cmd->count("--near-steps")) o.march.sweep_near_steps = preset.march.sweep_near_steps;
     if (!cmd->count("--sweep-lines")) o.march.sweep_lines = preset.march.sweep_lines;
     if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;

@@ -54,10 +54,12 @@ struct MarchOptions {
   EarthCurvature curvature;     // on by default
   // How horizons are found: rays per texel over the pyramid ("march", the knobs above)
   // or sweep lines holding convex hulls ("sweep", horizon_sweep.h, the knobs below),
-  // which marches instead where it does not apply (sweep_applicable).
-  HorizonMethod method = HorizonMethod::March;
+  // which marches instead where it does not apply (sweep_applicable). The sweep by
+  // default: on projected real DEMs it has 1/5 of the march's svf RMSE and 1/7 of its
+  // skyview RMSE at 1/3 of its CPU time (docs/accuracy.md), and half its GPU time.
+  HorizonMethod method = HorizonMethod::Sweep;
   int sweep_near_steps = 4;  // K: half-texel steps each texel takes along its own ray
-  int sweep_lines = 2;       // sweep lines per texel across the heading (1/Δc)
+  int sweep_lines = 1;       // sweep lines per texel across the heading (1/Δc)
 };
 
 // How a step reads heights, as `skylit shade --levels` and the bench name it:

@@ -32,17 +32,21 @@ std::optional<Quality> parse_quality(std::string_view name) {
 }
 
 QualitySettings quality_settings(Quality q) {
-  // Chosen from the GPU front (llvmpipe, 256² and 512², docs/quality-presets.md); an
-  // NVIDIA front is still to be measured with `skylit bench --backend gpu`. Each preset
-  // changes one knob of the defaults:
+  // Chosen from the GPU front (llvmpipe, 256² and 512², docs/quality-presets.md) and the
+  // real-DEM accuracy (docs/accuracy.md); an NVIDIA front is still to be measured with
+  // `skylit bench --backend gpu`. Each preset changes one knob of the march and of the
+  // sweep (whichever runs):
   QualitySettings s = library_defaults();
   switch (q) {
     case Quality::Fast:
       s.azimuths = 16;  // the knee: half the march for a few % more shaded RMSE
+      s.sweep_near_steps = 2;  // sweep: 1/3 less time, svf RMSE still 1/3 of the march's
       break;
     case Quality::Default: break;
     case Quality::High:
-      s.k_v = 8;  // the best skyview (−25 % RMSE) for 1.6× the CPU; more W adds nothing
+      s.k_v = 8;  // march: the best skyview (−25 % RMSE) for 1.6× the CPU; more W adds nothing
+      s.sweep_near_steps = 8;  // sweep: at the azimuth-sampling floor of W 32 (docs/accuracy.md)
+      s.sweep_lines = 3;
       break;
   }
   return s;

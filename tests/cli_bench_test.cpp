@@ -222,7 +222,7 @@ TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
   EXPECT_EQ(*rows[1].skipped, "no B-spline wedges");
   EXPECT_TRUE(std::isnan(rows[1].frame_ms.median));
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
-    return n.find("bspl skipped on scripted: no B-spline wedges") != std::string::npos;
+    return n.find(" bspl") != std::string::npos && n.find("skipped on scripted: no B-spline wedges") != std::string::npos;
   })) << "the skip is reported";
 }
 
@@ -234,8 +234,8 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
   using skylit::shading::HorizonMethod;
   const skylit::shading::MarchOptions d;
   EXPECT_EQ(sweep_settings("smoke").size(), 3u);
-  EXPECT_EQ(sweep_settings("default").size(), 21u);
-  EXPECT_EQ(sweep_settings("full").size(), 924u);
+  EXPECT_EQ(sweep_settings("default").size(), 32u);
+  EXPECT_EQ(sweep_settings("full").size(), 945u);
   for (const std::string name : {"default", "full"}) {
     const auto list = sweep_settings(name);
     int sweeps = 0;
@@ -248,10 +248,11 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
       if (s.horizons == HorizonMethod::Sweep) {
         ++sweeps;
         EXPECT_EQ(s.subsample, 1) << s.label();  // the sweep does not sub-sample
-        EXPECT_TRUE(s.k_v == d.k_v && s.level_offset == d.level_offset && s.smooth_max == d.smooth_max &&
-                    s.levels == skylit::shading::level_sampling(d))
+        // Presets carry the march's knobs for the fields the sweep cannot take (high: k_v 8).
+        EXPECT_TRUE(s.preset || (s.k_v == d.k_v && s.level_offset == d.level_offset && s.smooth_max == d.smooth_max &&
+                                 s.levels == skylit::shading::level_sampling(d)))
             << s.label();
-        EXPECT_NE(s.label().find(" sweep K" + std::to_string(s.near_steps) + " L" + std::to_string(s.sweep_lines)),
+        EXPECT_NE(s.label().find(" K" + std::to_string(s.near_steps) + " L" + std::to_string(s.sweep_lines)),
                   std::string::npos)
             << s.label();
       } else {
@@ -259,17 +260,23 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
       }
       for (std::size_t b = 0; b < a; ++b) EXPECT_FALSE(list[b] == s) << name << ": " << s.label();
     }
-    // default: (K, lines) = (2, 1), (4, 2), (8, 3); full: those × W × n × wedge, plus W × K × lines.
-    EXPECT_EQ(sweeps, name == "default" ? 3 : 4 * 3 * 3 * 2 + 4 * 3 * 3 - 4 * 3) << name;
+    // default: the default preset (W 32, K 4, 1 line) with W (8, 16, 64), n (2, 3) or the
+    // B-spline wedge changed, and (K, lines) = (2, 1), (4, 2), (8, 3) at W 32 and (2, 1),
+    // (4, 1), (4, 2), (8, 3) at W 16 (W 16, K 4, 1 line counted above): 1 + 3 + 2 + 1 + 3 + 3
+    // + 1 (high: k_v 8, K 8, 3 lines) + 1 (the highest corner: W 64, n 4, B-spline wedge,
+    // K 8, 3 lines); full: the four (K, lines) × W × n × wedge, plus W × K ×
+    // lines, the four counted once, plus high.
+    EXPECT_EQ(sweeps, name == "default" ? 15 : 4 * 4 * 3 * 2 + 4 * 3 * 3 - 4 * 4 + 1) << name;
   }
-  BenchSetting march = sweep_settings("smoke")[1], sweep = march;
-  sweep.horizons = HorizonMethod::Sweep;
+  BenchSetting sweep = sweep_settings("smoke")[1], march = sweep;  // the default preset: a sweep
+  ASSERT_EQ(sweep.horizons, HorizonMethod::Sweep);
+  march.horizons = HorizonMethod::March;
   EXPECT_FALSE(march.same_march(sweep));
-  BenchSetting fewer_lines = sweep;
-  fewer_lines.sweep_lines = 1;
-  EXPECT_FALSE(sweep.same_march(fewer_lines));
+  BenchSetting more_lines = sweep;
+  more_lines.sweep_lines = 2;
+  EXPECT_FALSE(sweep.same_march(more_lines));
 
-  BenchRow row{"s", "8", "reference", "wall", fewer_lines, {1, 1, 1}, 1, {0, 0}, {0, 0}, std::nullopt};
+  BenchRow row{"s", "8", "reference", "wall", sweep, {1, 1, 1}, 1, {0, 0}, {0, 0}, std::nullopt};
   std::stringstream csv(csv_text({row}));
   std::string header, line;
   std::getline(csv, header);
@@ -279,7 +286,7 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
   auto cell = [&](const std::string& c) { return cells[std::find(columns.begin(), columns.end(), c) - columns.begin()]; };
   EXPECT_EQ(cell("horizons"), "sweep");
   EXPECT_EQ(cell("near_steps"), std::to_string(d.sweep_near_steps));
-  EXPECT_EQ(cell("sweep_lines"), "1");
+  EXPECT_EQ(cell("sweep_lines"), std::to_string(d.sweep_lines));
 }
 
 TEST(GpuTimer, MissingWhenItReadsZeroAgainstTheWallClock) {
@@ -311,6 +318,17 @@ TEST(QualityPresets, ParseApplyAndOrder) {
   };
   EXPECT_LT(march_cost(Quality::Fast), march_cost(Quality::Default));
   EXPECT_LT(march_cost(Quality::Default), march_cost(Quality::High));
+}
+
+// Every knob a setting varies makes another pipeline: a cached one must not be reused
+// for a setting that differs in any of them (it once ignored the horizon method).
+TEST(BenchTiming, PipelinesDifferWhereSettingsDiffer) {
+  using namespace skylit::app;
+  const auto list = sweep_settings("default");
+  for (std::size_t a = 0; a < list.size(); ++a)
+    for (std::size_t b = 0; b < list.size(); ++b)
+      EXPECT_EQ(same_pipeline_options(options_for(list[a], 1), options_for(list[b], 1)), a == b)
+          << list[a].label() << " vs " << list[b].label();
 }
 
 TEST(ParetoFront, KeepsOnlyUndominatedPointsFastestFirst) {

@@ -56,10 +56,10 @@ int notes(const std::string& log) {
 TEST(CliHorizons, SweepRunsWhereItAppliesAndExplicitFlagsWin) {
   ScratchDir dir;
   const std::string in = make_dem(dir, false);
-  const Shade march = shade(dir, in, ""), sweep = shade(dir, in, "--horizons sweep");
+  const Shade march = shade(dir, in, "--horizons march"), sweep = shade(dir, in, "--horizons sweep");
   EXPECT_EQ(notes(sweep.log), 0) << sweep.log;
   EXPECT_NE(march.v, sweep.v);
-  EXPECT_EQ(march.v, shade(dir, in, "--horizons march").v);  // the default is the march
+  EXPECT_EQ(sweep.v, shade(dir, in, "").v);  // the default is the sweep
   // K ≥ twice the side: every sample is a near step, i.e. the exact march.
   EXPECT_EQ(shade(dir, in, "--horizons sweep --near-steps 48").v, shade(dir, in, "--exact").v);
   // The knobs reach the sweep, and presets keep the sweep and its knobs when asked.
@@ -79,10 +79,11 @@ TEST(CliHorizons, OneNoteSaysWhyTheMarchRunsInstead) {
     const Shade s = shade(dir, c.in, "--horizons sweep " + c.extra);
     EXPECT_EQ(notes(s.log), 1) << c.extra << "\n" << s.log;
     EXPECT_NE(s.log.find(c.why), std::string::npos) << s.log;
-    EXPECT_EQ(s.v, shade(dir, c.in, c.extra).v) << c.extra;  // what runs instead
+    EXPECT_EQ(s.v, shade(dir, c.in, "--horizons march " + c.extra).v) << c.extra;  // what runs instead
+    EXPECT_EQ(notes(shade(dir, c.in, c.extra).log), 0) << c.extra;  // the default sweep falls back quietly
   }
   EXPECT_EQ(notes(shade(dir, utm, "--horizons sweep -q").log), 0);
-  EXPECT_EQ(notes(shade(dir, geo, "").log), 0);  // no sweep asked for
+  EXPECT_EQ(notes(shade(dir, geo, "--horizons march").log), 0);  // no sweep asked for
 }
 
 TEST(CliHorizons, BadValuesFailCleanly) {

@@ -229,9 +229,12 @@ TEST(CliShade, QualityPresetSetsKnobsAndExplicitFlagsWin) {
     return read_output(out).v;
   };
   const auto fast = values("--quality fast");
-  EXPECT_EQ(fast, values("--azimuths 16 --levels bilinear --horizon-max plain"));
-  EXPECT_NE(fast, values("--quality fast --levels bspline --horizon-max smooth"));
-  EXPECT_EQ(values("--quality fast --levels bspline --horizon-max smooth"),
-            values("--azimuths 16 --levels bspline --horizon-max smooth"));
+  EXPECT_EQ(fast, values("--azimuths 16 --near-steps 2"));  // the sweep's knobs
+  EXPECT_NE(fast, values("--quality fast --near-steps 4"));
+  const auto fast_march = values("--quality fast --horizons march");
+  EXPECT_EQ(fast_march, values("--horizons march --azimuths 16 --levels bilinear --horizon-max plain"));
+  EXPECT_NE(fast_march, values("--quality fast --horizons march --levels bspline --horizon-max smooth"));
+  EXPECT_EQ(values("--quality fast --horizons march --levels bspline --horizon-max smooth"),
+            values("--horizons march --azimuths 16 --levels bspline --horizon-max smooth"));
   expect_clean_shade_failure(dir, in + " -o " + dir.file("x.tif") + " --quality best", "--quality");
 }

@@ -63,8 +63,10 @@ terrain::HeightField synthetic(int w, int h) {
   return terrain::make_synthetic_terrain(o);
 }
 
+// The march's sub-sampling (s = 1 too: the default sweep does not sub-sample).
 ProductOptions options(int s, int azimuths = 16) {
   ProductOptions o;
+  o.march.method = HorizonMethod::March;
   o.march.azimuths = azimuths;
   o.subsample = s;
   return o;

@@ -4,11 +4,13 @@
 
 #include "shading/horizon_march.h"
 #include "shading/products.h"
+#include "shading/reference_pipeline.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace skylit::shading {
@@ -57,14 +59,16 @@ TEST(Products, NegativeHorizonOnlyFromEarthCurvature) {
     for (int i = 0; i < 33; ++i) f.at(i, j) = static_cast<float>(-10.0 * std::hypot(i - 16, j - 16));
   ProductOptions o = flat_earth();
   o.march.azimuths = 4;
-  for (bool exact : {false, true}) {
+  for (const auto& [exact, method] : {std::pair{false, HorizonMethod::March}, std::pair{false, HorizonMethod::Sweep},
+                                      std::pair{true, HorizonMethod::March}}) {
     o.exact = exact;
+    o.march.method = method;
     o.march.curvature.enabled = false;
     EXPECT_EQ(compute_product(f, Product::Horizon, o).at(1, 16, 16), 0.0f);
     o.march.curvature.enabled = true;
     const float h = compute_product(f, Product::Horizon, o).at(1, 16, 16);
-    // t₁: half a texel (exact) or the first march distance.
-    const double t1 = exact ? 250.0 : HorizonMarcher(f, o.march).distance(0);
+    // t₁: half a texel (exact, sweep) or the first march distance.
+    const double t1 = exact || method == HorizonMethod::Sweep ? 250.0 : HorizonMarcher(f, o.march).distance(0);
     EXPECT_LT(h, 0.0f);
     EXPECT_NEAR(h, -std::atan(t1 / (2 * o.march.curvature.effective_radius())) * 180 / kPi, 1e-9);
   }
@@ -132,7 +136,9 @@ TEST(Products, ThreadsGiveIdenticalResultsAndProgressReachesOne) {
   const ProductBands three =
       compute_product(f, Product::Skyview, o, [&](double x) { seen.push_back(x); });
   EXPECT_EQ(one.data, three.data);
-  ASSERT_EQ(seen.size(), 65u);
+  // One report per row, after one per sweep heading (the default sweep applies here).
+  ASSERT_TRUE(uses_sweep(f, o));
+  ASSERT_EQ(seen.size(), 65u + static_cast<std::size_t>(o.march.azimuths));
   for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_GT(seen[k], seen[k - 1]);
   EXPECT_DOUBLE_EQ(seen.back(), 1.0);
 }

@@ -12,8 +12,10 @@
 //    threads) and 512² (2 threads; 1 thread for svf only, to keep the run short). One
 //    iteration each; "Time" is wall time, "CPU" is the whole process's CPU time (all
 //    threads, MeasureProcessCPUTime) and the rates are per CPU second, so they compare
-//    across thread counts and stay meaningful when the machine is loaded. Default
-//    march, W = 32 (exact: W = ExactOptions::sky_azimuths = 360).
+//    across thread counts and stay meaningful when the machine is loaded. The default
+//    march (method march), W = 32 (exact: W = ExactOptions::sky_azimuths = 360).
+//  * BM_ComputeProductSweep: the same products with the horizon sweep (2 threads).
+//  * BM_SweepFarSlopes: shading::sweep_far_slopes for one heading, one thread.
 //  * BM_ComputeProductExact: the same with exact = true on a small 64² scene (the dense
 //    ground truth costs more per texel·azimuth and uses 360 azimuths), next to the
 //    default march on the same scene.
@@ -23,6 +25,7 @@
 #include "shading/azimuth.h"
 #include "shading/horizon_exact.h"
 #include "shading/horizon_march.h"
+#include "shading/horizon_sweep.h"
 #include "shading/products.h"
 #include "terrain/height_field.h"
 #include "terrain/pyramid.h"
@@ -161,9 +164,11 @@ BENCHMARK(BM_MarcherBuild)->ArgName("size")->Arg(512)->Arg(1024)->Unit(benchmark
 
 const sh::Product kProducts[] = {sh::Product::Svf, sh::Product::Skyview, sh::Product::Shaded};
 
-void run_product(benchmark::State& state, int size, sh::Product product, unsigned threads, bool exact) {
+void run_product(benchmark::State& state, int size, sh::Product product, unsigned threads, bool exact,
+                 sh::HorizonMethod method = sh::HorizonMethod::March) {
   const tr::HeightField& field = scene(size);
   sh::ProductOptions opt;
+  opt.march.method = method;
   opt.march.azimuths = kAzimuths;
   opt.threads = threads;
   opt.exact = exact;
@@ -193,6 +198,33 @@ BENCHMARK(BM_ComputeProduct)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->Iterations(1);
+
+// The same products with the horizon sweep (the default on projected grids), 2 threads.
+void BM_ComputeProductSweep(benchmark::State& state) {
+  run_product(state, static_cast<int>(state.range(0)), kProducts[state.range(1)], 2, false, sh::HorizonMethod::Sweep);
+}
+BENCHMARK(BM_ComputeProductSweep)
+    ->ArgNames({"size", "product"})
+    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->Iterations(1);
+
+// sweep_far_slopes for one heading (30° off the x axis), one thread: the sweep's cost per
+// azimuth. items_per_second = texels per second.
+void BM_SweepFarSlopes(benchmark::State& state) {
+  const tr::HeightField& field = scene(static_cast<int>(state.range(0)));
+  sh::MarchOptions o;
+  o.sweep_near_steps = static_cast<int>(state.range(1));
+  o.sweep_lines = static_cast<int>(state.range(2));
+  const sh::Heading u = sh::heading_from_geographic(sh::band_azimuth(1, 12));
+  for (auto _ : state) benchmark::DoNotOptimize(sh::sweep_far_slopes(field, u, o).data());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
+}
+BENCHMARK(BM_SweepFarSlopes)
+    ->ArgNames({"size", "K", "lines"})
+    ->ArgsProduct({{256, 1024}, {4}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
 
 // exact = true vs the default march, 64² (see the header comment).
 void BM_ComputeProductExact(benchmark::State& state) {

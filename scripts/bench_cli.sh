@@ -30,11 +30,13 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
 "$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p svf --azimuths 1 2>&1 | tr '\r' '\n' | grep 'computed on' || true
 time_runs "skylit shade ${size}² -p shaded (default quality, auto backend)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded.png" -p shaded -q --overwrite
-time_runs "skylit shade ${size}² -p shaded --subsample 2" \
+time_runs "skylit shade ${size}² -p shaded --horizons march" \
+  "$skylit" shade "$tmp/dem.tif" -o "$tmp/march.png" -p shaded --horizons march -q --overwrite
+time_runs "skylit shade ${size}² -p shaded --subsample 2 (the march)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded2.png" -p shaded --subsample 2 -q --overwrite
 time_runs "skylit shade ${size}² -p shaded --quality fast" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/fast.png" -p shaded --quality fast -q --overwrite
-time_runs "skylit shade ${size}² -p shaded --quality fast --subsample 4" \
+time_runs "skylit shade ${size}² -p shaded --quality fast --subsample 4 (the march)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded4.png" -p shaded --quality fast --subsample 4 -q --overwrite
 time_runs "gdaldem hillshade -multidirectional ${size}² (PNG)" \
   gdaldem hillshade -multidirectional -q -of PNG "$tmp/dem.tif" "$tmp/gd.png"

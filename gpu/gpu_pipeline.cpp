@@ -154,6 +154,10 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   const std::size_t per_line = static_cast<std::size_t>(max_samples) * 2 * sizeof(float);
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (max_samples > max_size)
+    throw std::runtime_error("GPU sweep: a line of " + std::to_string(max_samples) +
+                             " samples exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size) + " (the sweep takes " +
+                             std::to_string((max_size + 1) / 2) + " texels along an azimuth; --horizons march has no such limit)");
   int lanes = 1;
   for (const shading::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),

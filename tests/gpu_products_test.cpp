@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -194,6 +196,23 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
   for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
   ASSERT_FALSE(shading::uses_sweep(geographic, o));
   expect_product_matches(geographic, Product::Horizon, o, "sweep asked, geographic: march");
+}
+
+// A sweep line holds 2·side − 1 samples in an image column: past GL_MAX_TEXTURE_SIZE the
+// pipeline says so (and `auto` then computes on the reference), before any allocation.
+TEST_F(GpuProductsTest, SweepBeyondTheTextureLimitFailsClearly) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  HeightField wide = synthetic_scene(max_size / 2 + 2, 3, 1);  // east-west lines are too long
+  ProductOptions o = default_options();
+  ASSERT_TRUE(shading::uses_sweep(wide, o));
+  try {
+    GpuProductPipeline(Product::Svf, o).compute(wide);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--horizons march"), std::string::npos) << e.what();
+  }
 }
 
 // The march's other settings: plain max, no pyramid (bilinear level 0), bilinear

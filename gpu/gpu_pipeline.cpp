@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -141,10 +142,36 @@ bool sun_lit(Product product, const shading::ProductOptions& o) {
   return shading::uses_lighting(product, o) && sky::luminance(o.lighting->sun.dni) > 0.0;
 }
 
+// The sweep's textures, kept between compute() calls while their sizes stay: fresh memory
+// is dear (≈ 3 ms per MiB of first touch on the CI VM, 0.4 s for 1024²'s far slopes),
+// and a time series, the viewer or the bench computes the same size again and again.
+struct SweepTextures {
+  TextureArray far, sun_far;
+  Texture2D hull;
+  std::array<int, 3> far_size{}, sun_far_size{}, hull_size{};
+
+  static const TextureArray& array(TextureArray& t, std::array<int, 3>& size, int w, int h, int layers) {
+    if (size != std::array{w, h, layers}) {
+      t = TextureArray();  // free the old one first
+      t = TextureArray(w, h, layers);
+      size = {w, h, layers};
+    }
+    return t;
+  }
+  const Texture2D& hull_of(int lanes, int samples) {
+    if (hull_size != std::array{lanes, samples, 0}) {
+      hull = Texture2D();
+      hull = Texture2D(lanes, samples, TextureFormat::RG32F);
+      hull_size = {lanes, samples, 0};
+    }
+    return hull;
+  }
+};
+
 // Stage 2 with the sweep (shading/horizon_sweep.h): horizon_sweep.comp for every band's
 // lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
 void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, const shading::MarchOptions& o,
-                const std::vector<shading::Heading>& headings, const TextureArray& far) {
+                const std::vector<shading::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
   std::vector<shading::SweepGeometry> geometry;
   int max_samples = 1;
   for (const shading::Heading& u : headings) {
@@ -162,8 +189,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   for (const shading::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
                                                   std::max<std::size_t>(1, kHullBudgetBytes / per_line)}));
-  const Texture2D hull(lanes, max_samples, TextureFormat::RG32F);  // throws beyond GL_MAX_TEXTURE_SIZE
-  hull.bind_image(kHullImageUnit, true, true);
+  textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
   far.clear(-std::numeric_limits<float>::infinity());
   far.bind_image(kFarImageUnit, false, true);
   set_grid_uniforms(sweep, field);
@@ -193,13 +219,15 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
 
 // SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
 // horizon_sweep.comp on the resident heights and row spacings (one layer).
-TextureArray sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
-                            const shading::ProductOptions& o, shading::Heading u, const ResidentField& resident) {
+const TextureArray& sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
+                                   const shading::ProductOptions& o, shading::Heading u, const ResidentField& resident,
+                                   SweepTextures& textures) {
   const BufferTexture heights_tex(resident.heights()), row_dx_tex(resident.row_dx());
   heights_tex.bind_sampler(kHeights);
   row_dx_tex.bind_sampler(kRowDx);
-  TextureArray far(field.width, field.height, 1);
-  sweep_pass(sweep, field, shading::sun_shadow_options(o).march, {u}, far);
+  const TextureArray& far =
+      SweepTextures::array(textures.sun_far, textures.sun_far_size, field.width, field.height, 1);
+  sweep_pass(sweep, field, shading::sun_shadow_options(o).march, {u}, far, textures);
   return far;
 }
 
@@ -269,6 +297,7 @@ struct GpuProductPipeline::Impl {
   GlslDefines march_defines;
   // The sweep (shading/horizon_sweep.h), compiled at the first field that uses it.
   std::optional<ComputeProgram> near;
+  SweepTextures sweep_textures;
   std::vector<shading::Heading> band_headings;
   std::optional<ComputeProgram> products;  // surface_products.comp
   // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
@@ -474,10 +503,11 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     t.upload_ms = ms_since(upload_start);
     Buffer shadow;
     const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
-    const TextureArray far = swept ? sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field)
-                                   : TextureArray();
+    const TextureArray* far =
+        swept ? &sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field, k.sweep_textures)
+              : nullptr;
     t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
-                        t.uploaded_bytes, shadow, swept ? &far : nullptr);
+                        t.uploaded_bytes, shadow, far);
     shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
     shadow.download(out.data.data(), texels * sizeof(float));
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
@@ -596,10 +626,11 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   Buffer shadow;
   if (k.sun[0]) {
     const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
-    const TextureArray far = swept ? sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field)
-                                   : TextureArray();
+    const TextureArray* far =
+        swept ? &sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field, k.sweep_textures)
+              : nullptr;
     t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
-                        t.uploaded_bytes, shadow, swept ? &far : nullptr);
+                        t.uploaded_bytes, shadow, far);
     heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
   }
@@ -608,7 +639,6 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // the near steps). Stage 3: the product. Row chunks bound a dispatch's length.
   const bool one_dx = !mOptions.exact && std::adjacent_find(field.dx_per_row.begin(), field.dx_per_row.end(),
                                                              std::not_equal_to<>()) == field.dx_per_row.end();
-  TextureArray far;
   if (sweep) {
     if (!k.near) {
       GlslDefines d = common_defines(k.azimuths, mOptions);
@@ -618,9 +648,9 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
           .set("FAR_BINDING", kFar);
       k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
     }
-    far = TextureArray(w, h, bands);
+    const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
     const auto sweep_start = Clock::now();
-    sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far);
+    sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
     glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
     t.march_ms += ms_since(sweep_start);
     far.bind_sampler(kFar);

@@ -185,6 +185,12 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
     const ProductBands gpu = expect_product_matches(pipeline, field, "sweep");
     EXPECT_TRUE(std::isnan(gpu.at(0, 50, 40))) << "nodata texel, " << shading::product_name(p);
   }
+  {  // one pipeline over fields of other sizes and back: its kept textures follow
+    const GpuProductPipeline pipeline(Product::Svf, o);
+    const HeightField smaller = synthetic_scene(60, 52, 5);
+    for (const HeightField* f : std::initializer_list<const HeightField*>{&field, &smaller, &field})
+      expect_product_matches(pipeline, *f, "sweep, kept textures");
+  }
   o.march.sweep_near_steps = 0;
   o.march.sweep_lines = 3;
   o.march.curvature.radius_m = 20000.0;  // curvature that matters on a 3 km field

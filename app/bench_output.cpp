@@ -43,14 +43,15 @@ std::string write_file(const std::string& file, const std::string& text) {
 }
 
 constexpr const char* kTableFormat =
-    "%-10s %5s %3s %3s %3s %2s %2s %2s %-7s %-8s %-6s %-5s %2s %2s %-8s %10s %10s %10s %10s %10s %9s %9s\n";
+    "%-10s %5s %3s %3s %3s %2s %2s %2s %-7s %-8s %-6s %-5s %2s %2s %-8s %10s %10s %10s %10s %10s %9s %9s %9s\n";
 
 }  // namespace
 
 void print_table_header(std::ostream& out) {
   char buf[256];
   std::snprintf(buf, sizeof buf, kTableFormat, "scene", "size", "W", "kv", "o", "n", "N", "s", "wedge", "levels", "max",
-                "hz", "K", "L", "preset", "ms_median", "ms_p10", "ms_p90", "sky_rmse", "sky_max", "shd_rmse", "shd_max");
+                "hz", "K", "L", "preset", "ms_median", "ms_p10", "ms_p90", "sky_rmse", "sky_max", "shd_rmse", "shd_max",
+                "shd_same");
   out << buf << std::flush;
 }
 
@@ -68,7 +69,8 @@ void print_table_row(std::ostream& out, const BenchRow& r) {
                 r.skipped ? "skipped" : number(r.frame_ms.median, "%.2f").c_str(),
                 number(r.frame_ms.p10, "%.2f").c_str(), number(r.frame_ms.p90, "%.2f").c_str(),
                 number(r.skyview.rmse, "%.5f").c_str(), number(r.skyview.max, "%.4f").c_str(),
-                number(r.shaded.rmse, "%.3f").c_str(), number(r.shaded.max, "%.1f").c_str());
+                number(r.shaded.rmse, "%.3f").c_str(), number(r.shaded.max, "%.1f").c_str(),
+                number(r.shaded_same_order.rmse, "%.3f").c_str());
   out << buf << std::flush;
 }
 
@@ -76,7 +78,8 @@ std::string csv_text(const std::vector<BenchRow>& rows) {
   std::string text =
       "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,horizons,"
       "near_steps,sweep_lines,preset,clock,"
-      "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status\n";
+      "ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,"
+      "shaded_same_order_rmse,shaded_same_order_max,status\n";
   for (const BenchRow& r : rows) {
     const BenchSetting& s = r.setting;
     text += r.scene + "," + r.size + "," + r.backend + "," + std::to_string(s.azimuths) + "," +
@@ -90,7 +93,8 @@ std::string csv_text(const std::vector<BenchRow>& rows) {
             number(r.frame_ms.p10, "%.4f") + "," + number(r.frame_ms.p90, "%.4f") + "," +
             number(r.wall_ms_median, "%.4f") + "," + number(r.skyview.rmse, "%.7g") + "," +
             number(r.skyview.max, "%.7g") + "," + number(r.shaded.rmse, "%.7g") + "," +
-            number(r.shaded.max, "%.7g") + "," + (r.skipped ? "skipped" : "ok") + "\n";
+            number(r.shaded.max, "%.7g") + "," + number(r.shaded_same_order.rmse, "%.7g") + "," +
+            number(r.shaded_same_order.max, "%.7g") + "," + (r.skipped ? "skipped" : "ok") + "\n";
   }
   return text;
 }

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 #include <thread>
+#include <tuple>
+#include <vector>
 
 namespace skylit::app {
 namespace {
@@ -26,6 +28,8 @@ std::string format_duration(double seconds) {
 
 struct Truth {
   shading::ProductBands skyview, shaded;
+  // shaded at (n, N, wedge) of the settings that asked, computed at first need.
+  std::vector<std::pair<std::tuple<int, int, sh::WedgeInterpolation>, shading::ProductBands>> same_order;
 };
 
 // The truth of both products, or nothing when the scene is above --truth-max-size.
@@ -47,7 +51,7 @@ std::optional<Truth> compute_truth(const BenchScene& scene, const BenchConfig& c
   const shading::ProductOptions options = truth_options(config.threads);
   FrameTime skyview_time, shaded_time;
   Truth truth{timing.compute(scene.field, Product::Skyview, options, skyview_time),
-              timing.compute(scene.field, Product::Shaded, options, shaded_time)};
+              timing.compute(scene.field, Product::Shaded, options, shaded_time), {}};
   const double seconds = (skyview_time.wall_ms + shaded_time.wall_ms) / 1000.0;
   note("ground truth for " + scene.name + " " + scene.size() + ": " + format_duration(seconds));
   if (!measured || side > measured->first) measured = std::pair{side, seconds};
@@ -78,7 +82,7 @@ std::vector<BenchRow> run_scene(const BenchScene& scene, const std::vector<Bench
                                 const BenchConfig& config, TimingSource& timing, TimingSource& truth_timing,
                                 std::optional<std::pair<int, double>>& measured_truth, const RowCallback& on_row,
                                 const NoteCallback& note) {
-  const std::optional<Truth> truth = compute_truth(scene, config, truth_timing, measured_truth, note);
+  std::optional<Truth> truth = compute_truth(scene, config, truth_timing, measured_truth, note);
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   std::vector<BenchRow> rows;
   for (const BenchSetting& s : settings) {
@@ -108,6 +112,21 @@ std::vector<BenchRow> run_scene(const BenchScene& scene, const std::vector<Bench
     row.wall_ms_median = time_stats(walls).median;
     if (truth) {
       row.shaded = error_stats(shaded, truth->shaded);
+      const auto key = std::tuple{s.sh_order, s.nlp_order, s.wedge};
+      auto same_order = std::find_if(truth->same_order.begin(), truth->same_order.end(),
+                                     [&](const auto& entry) { return entry.first == key; });
+      if (same_order == truth->same_order.end()) {
+        shading::ProductOptions o = truth_options(config.threads);
+        o.shaded.sh_order = s.sh_order;
+        o.shaded.nlp_order = s.nlp_order;
+        o.shaded.wedge = s.wedge;
+        FrameTime t;
+        truth->same_order.emplace_back(key, truth_timing.compute(scene.field, Product::Shaded, o, t));
+        note("ground truth at n " + std::to_string(s.sh_order) + ", N " + std::to_string(s.nlp_order) + ", " +
+             std::string(wedge_name(s.wedge)) + " wedge: " + format_duration(t.wall_ms / 1000.0));
+        same_order = truth->same_order.end() - 1;
+      }
+      row.shaded_same_order = error_stats(shaded, same_order->second);
       // skyview depends on the march only: reuse the error of an earlier equal march.
       const auto same = std::find_if(rows.begin(), rows.end(), [&](const BenchRow& r) {
         return !r.skipped && r.setting.same_march(s);

@@ -6,6 +6,7 @@
 #include "app/bench_timing.h"
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +42,9 @@ struct BenchRow {
   double wall_ms_median = 0;  // wall clock of the whole call (read-back, CPU stages included)
   ErrorStats skyview, shaded;
   std::optional<std::string> skipped;
+  // shaded against a truth of the setting's own SH order, NLP order and wedge (exact
+  // horizons): the horizons' error without the band limit that `shaded` charges.
+  ErrorStats shaded_same_order{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 
 // Seconds the brute-force truth (skyview + shaded) would take on the reference

@@ -69,7 +69,8 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   std::getline(lines, header);
   EXPECT_EQ(header,
             "scene,size,backend,azimuths,k_v,level_offset,sh_order,nlp_order,subsample,wedge,levels,max,horizons,"
-            "near_steps,sweep_lines,preset,clock,ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,status");
+            "near_steps,sweep_lines,preset,clock,ms_median,ms_p10,ms_p90,wall_ms_median,skyview_rmse,skyview_max,shaded_rmse,shaded_max,"
+            "shaded_same_order_rmse,shaded_same_order_max,status");
   const auto columns = split(header, ',');
   auto col = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
@@ -86,7 +87,8 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
     EXPECT_GT(std::stod(row[col("ms_median")]), 0.0);
     EXPECT_LE(std::stod(row[col("ms_p10")]), std::stod(row[col("ms_median")]));
     EXPECT_LE(std::stod(row[col("ms_median")]), std::stod(row[col("ms_p90")]));
-    for (const char* e : {"skyview_rmse", "skyview_max", "shaded_rmse", "shaded_max"}) {
+    for (const char* e : {"skyview_rmse", "skyview_max", "shaded_rmse", "shaded_max", "shaded_same_order_rmse",
+                          "shaded_same_order_max"}) {
       const double v = std::stod(row[col(e)]);
       EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << e << " = " << row[col(e)];
     }
@@ -99,7 +101,7 @@ TEST_F(CliBench, SmokeSweepWritesCsvAndParetoPlot) {
   EXPECT_EQ(rows[2][col("subsample")], "1");
   EXPECT_EQ(rows[2][col("wedge")], "bspline");
   EXPECT_EQ(rows[1][col("preset")], "default");
-  for (const char* e : {"skyview_rmse", "shaded_rmse"}) {
+  for (const char* e : {"skyview_rmse", "shaded_rmse", "shaded_same_order_rmse"}) {
     EXPECT_GT(std::stod(rows[0][col(e)]), std::stod(rows[1][col(e)])) << e;
     EXPECT_GT(std::stod(rows[1][col(e)]), std::stod(rows[2][col(e)])) << e;
   }

@@ -11,7 +11,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -96,7 +95,6 @@ std::vector<shading::Heading> band_headings(Product product, int w) {
                                             : shading::heading_from_geographic(shading::band_azimuth(k, w)));
   return out;
 }
-
 
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
   GlslDefines d;
@@ -205,7 +203,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
     sweep.set_uniform("lines", g.lines);
     sweep.set_uniform("r_f", static_cast<float>(g.r));
     sweep.set_uniform("c_low_f", static_cast<float>(g.c_low));
-    sweep.set_uniform("spacing_f", static_cast<float>(g.spacing));
+    sweep.set_uniform("spacing_f", static_cast<float>(g.spacing()));
     sweep.set_uniform("r_d", g.r);
     sweep.set_uniform("c_low_d", g.c_low);
     sweep.set_uniform("drop", static_cast<float>(o.curvature.drop_per_square_metre() * g.step_m * g.step_m));
@@ -332,6 +330,15 @@ struct GpuProductPipeline::Impl {
       sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
     }
     return *sweeps[sun];
+  }
+  // Stage 0: the sun's shadow into `shadow`, marched or swept (shading::sun_sweeps) as
+  // the reference does; returns the GPU time (ms). Needs the resident field bound.
+  double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
+                   std::size_t& uploaded, Buffer& shadow) {
+    const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
+    const TextureArray* far =
+        swept ? &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, field, sweep_textures) : nullptr;
+    return sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
   }
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
@@ -502,12 +509,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     k.field.valid().bind_storage(kValid);
     t.upload_ms = ms_since(upload_start);
     Buffer shadow;
-    const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
-    const TextureArray* far =
-        swept ? &sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field, k.sweep_textures)
-              : nullptr;
-    t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
-                        t.uploaded_bytes, shadow, far);
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
     shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
     shadow.download(out.data.data(), texels * sizeof(float));
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
@@ -625,20 +627,14 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   Buffer shadow;
   if (k.sun[0]) {
-    const bool swept = shading::sun_sweeps(field, shading::sun_shadow_options(mOptions));
-    const TextureArray* far =
-        swept ? &sun_far_slopes(k.sweep_kernel(mOptions, true), field, mOptions, k.sun_heading, k.field, k.sweep_textures)
-              : nullptr;
-    t.sun_ms = sun_pass(k.sun_kernel(swept), field, mOptions, mInvocationsPerDispatch, k.sun_schedule,
-                        t.uploaded_bytes, shadow, far);
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
     heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
   }
 
   // Stage 2: the march (with the sweep: the sweep over the whole field, then per chunk
   // the near steps). Stage 3: the product. Row chunks bound a dispatch's length.
-  const bool one_dx = !mOptions.exact && std::adjacent_find(field.dx_per_row.begin(), field.dx_per_row.end(),
-                                                             std::not_equal_to<>()) == field.dx_per_row.end();
+  const bool one_dx = !mOptions.exact && shading::one_row_spacing(field);
   if (sweep) {
     if (!k.near) {
       GlslDefines d = common_defines(k.azimuths, mOptions);

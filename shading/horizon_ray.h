@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace skylit::shading {
 
@@ -58,6 +59,13 @@ inline double bilinear_height(const terrain::HeightField& f, GridPoint p) {
   const double top = (1.0 - a) * f.at(i0, j0) + a * f.at(i1, j0);
   const double bottom = (1.0 - a) * f.at(i0, j1) + a * f.at(i1, j1);
   return (1.0 - b) * top + b * bottom;
+}
+
+// Whether every row has the same east–west spacing (projected grids): the sweep's
+// condition, and the march kernel's uniform-spacing variant's.
+inline bool one_row_spacing(const terrain::HeightField& f) {
+  return !f.dx_per_row.empty() &&
+         std::adjacent_find(f.dx_per_row.begin(), f.dx_per_row.end(), std::not_equal_to<>()) == f.dx_per_row.end();
 }
 
 // Smallest texel side (m): the march's length unit.

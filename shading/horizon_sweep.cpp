@@ -16,11 +16,9 @@ bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& o) 
 }
 
 std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& o) {
-  const auto& dx = field.dx_per_row;
-  if (dx.empty() || std::adjacent_find(dx.begin(), dx.end(), std::not_equal_to<>()) != dx.end())
-    return "the rows' spacings differ (a geographic grid)";
+  if (!one_row_spacing(field)) return "the rows' spacings differ (a geographic grid)";
   if (o.max_distance_m <= 0.0) return "";  // the DEM extent
-  const double diagonal = std::hypot((field.width - 1) * dx.front(), (field.height - 1) * field.dy);
+  const double diagonal = std::hypot((field.width - 1) * field.dx(0), (field.height - 1) * field.dy);
   if (o.max_distance_m >= diagonal) return "";
   char text[128];
   std::snprintf(text, sizeof text, "the maximum distance %g m is below the DEM's diagonal %.1f m", o.max_distance_m,
@@ -44,13 +42,12 @@ SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int l
   g.extent_b = g.x_dominant ? field.height : field.width;
   g.samples = 2 * (g.extent_a - 1) + 1;
   g.lines_per_texel = lines_per_texel;
-  g.spacing = 1.0 / lines_per_texel;
   // c = b − r·a over the grid's corners, with a line of margin on each side.
   const double a1 = g.extent_a - 1.0, b1 = g.extent_b - 1.0;
   const double c_min = std::min({0.0, -g.r * a1, b1, b1 - g.r * a1});
   const double c_max = std::max({0.0, -g.r * a1, b1, b1 - g.r * a1});
-  g.c_low = c_min - g.spacing;
-  g.lines = static_cast<int>(std::ceil((c_max - g.c_low) / g.spacing)) + 2;
+  g.c_low = c_min - g.spacing();
+  g.lines = static_cast<int>(std::ceil((c_max - g.c_low) / g.spacing())) + 2;
   return g;
 }
 
@@ -97,7 +94,7 @@ std::vector<float> sweep_far_slopes(const terrain::HeightField& field, Heading u
   Hull hull;
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
   for (int line = 0; line < g.lines; ++line) {
-    const double c = g.c_low + line * g.spacing;
+    const double c = g.c_low + line * g.spacing();
     hull.clear();
     for (int n = g.samples - 1; n >= 0; --n) {
       // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).

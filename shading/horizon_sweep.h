@@ -52,8 +52,8 @@ struct SweepGeometry {
   int extent_a = 0, extent_b = 0;  // texels along a and b
   int samples = 0;         // M = 2(extent_a − 1) + 1 samples per line, a on half texels
   double c_low = 0.0;      // c of line 0
-  double spacing = 0.5;    // Δc = 1/lines_per_texel
   int lines_per_texel = 2;
+  double spacing() const { return 1.0 / lines_per_texel; }  // Δc between lines
   int lines = 0;
   // Dominant-axis coordinate of sample n of a line (n = 0 at the grid's upwind edge).
   double a_at(int n) const { return (delta_a > 0.0 ? 0.0 : extent_a - 1.0) + n * delta_a; }

@@ -114,7 +114,7 @@ struct FarSlope {
 FarSlope brute_far_slope(const HeightField& f, int i, int j, Heading u, const MarchOptions& o) {
   const SweepGeometry g = sweep_geometry(f, u, o.sweep_lines);
   const double a = g.x_dominant ? i : j, b = g.x_dominant ? j : i;
-  const double c_texel = b - g.r * a, c_line = g.c_low + g.owner(a, b) * g.spacing;
+  const double c_texel = b - g.r * a, c_line = g.c_low + g.owner(a, b) * g.spacing();
   EXPECT_LE(std::abs(c_line - c_texel), 0.5 / o.sweep_lines + 1e-9) << "lateral offset at " << i << "," << j;
   const double r_eff = o.curvature.radius_m / (1.0 - o.curvature.refraction_k);
   const double h0 = f.at(i, j), step = exact_step_length(f, j, u, 0.5);

@@ -119,7 +119,7 @@ std::vector<BenchSetting> full_sweep() {
       for (double o : kLevelOffsets)
         for (Levels l : kLevels)
           for (bool m : kSmoothMax) add_unique(list, make_setting(w, k, o, d.sh_order, d.subsample, d.wedge, l, m));
-  // The sweep ignores the pyramid knobs: the three sweeps crossed with W, n and wedge,
+  // The sweep ignores the pyramid knobs: the four sweeps (kSweeps) crossed with W, n and wedge,
   // and every (W, K, lines) at the default n and wedge.
   for (int w : kAzimuths)
     for (int n : kShOrders)

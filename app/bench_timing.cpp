@@ -77,7 +77,6 @@ class ReferenceSource final : public TimingSource {
   bool cpu_;
 };
 
-
 // One context for the run; pipelines compiled once per (product, setting) and kept
 // while the sweep is on that setting. The cache is small because a pipeline keeps its
 // field resident on the GPU: a 4096² scene's buffers per pipeline, times a sweep's

@@ -1,9 +1,8 @@
 #include "shading/reference_pipeline.h"
 
-#include "shading/horizon_sweep.h"
-
 #include "shading/azimuth.h"
 #include "shading/horizon_subsample.h"
+#include "shading/horizon_sweep.h"
 #include "shading/shading_modes.h"
 #include "shading/sh_exp.h"
 #include "shading/quadrature.h"
@@ -181,6 +180,7 @@ class HorizonSource {
   }
 
   bool subsampled() const { return cols_.step > 1; }
+  bool sweeps() const { return sweep_; }
   // Share of the texels' work done by march_coarse (for progress): coarse / (coarse + all).
   double coarse_share() const {
     if (!subsampled()) return 0.0;
@@ -324,7 +324,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
   const double coarse_share = horizons.coarse_share();
   horizons.march_coarse(options.threads, [&](double f) { main_progress(coarse_share * f); });
   horizons.sweep(options.threads, [&](double f) { main_progress(0.5 * f); });
-  const double sweep_share = uses_sweep(field, options) ? 0.5 : 0.0;
+  const double sweep_share = horizons.sweeps() ? 0.5 : 0.0;
 
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());

@@ -161,14 +161,9 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
         ++c.n;
       };
       switch (horizon) {
-        case SunHorizon::Swept: {  // a level line across the disc, as Marched without disc_slope
-          const double s = march_at(i, j, 0.0);
-          push(-1.0, s);
-          push(1.0, s);
-          break;
-        }
+        case SunHorizon::Swept:  // the sun's azimuth only: a level line across the disc
         case SunHorizon::Marched:
-          if (options.disc_slope) {
+          if (horizon == SunHorizon::Marched && options.disc_slope) {
             for (double x : {-1.0, 0.0, 1.0}) push(x, march_at(i, j, x));
           } else {
             const double s = march_at(i, j, 0.0);

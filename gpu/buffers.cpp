@@ -187,7 +187,7 @@ TextureArray::TextureArray(int width, int height, int layers) : mWidth(width), m
                              std::to_string(layers) + " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size) +
                              " or GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(max_layers) + " (process in tiles)");
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mId);
-  glTextureStorage3D(mId, 1, GL_R32F, width, height, layers);
+  glTextureStorage3D(mId, 1, GL_R16UI, width, height, layers);
   glTextureParameteri(mId, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(mId, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(mId, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -210,12 +210,15 @@ TextureArray& TextureArray::operator=(TextureArray&& other) noexcept {
   return *this;
 }
 
-void TextureArray::clear(float value) const { glClearTexImage(mId, 0, GL_RED, GL_FLOAT, &value); }
+void TextureArray::clear(std::uint16_t value) const {
+  glClearTexImage(mId, 0, GL_RED_INTEGER, GL_UNSIGNED_SHORT, &value);
+}
 
-std::vector<float> TextureArray::download() const {
-  std::vector<float> out(static_cast<std::size_t>(mWidth) * mHeight * mLayers);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(mId, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
+std::vector<std::uint16_t> TextureArray::download() const {
+  std::vector<std::uint16_t> out(static_cast<std::size_t>(mWidth) * mHeight * mLayers);
+  glPixelStorei(GL_PACK_ALIGNMENT, 2);
+  glGetTextureImage(mId, 0, GL_RED_INTEGER, GL_UNSIGNED_SHORT, static_cast<GLsizei>(out.size() * sizeof(std::uint16_t)),
+                    out.data());
   return out;
 }
 
@@ -223,7 +226,7 @@ void TextureArray::bind_sampler(unsigned unit) const { glBindTextureUnit(unit, m
 
 void TextureArray::bind_image(unsigned unit, bool read, bool write) const {
   const GLenum access = read && write ? GL_READ_WRITE : write ? GL_WRITE_ONLY : GL_READ_ONLY;
-  glBindImageTexture(unit, mId, 0, GL_TRUE, 0, access, GL_R32F);
+  glBindImageTexture(unit, mId, 0, GL_TRUE, 0, access, GL_R16UI);
 }
 
 BufferTexture::BufferTexture(const Buffer& values, TextureFormat format) {

@@ -94,8 +94,9 @@ class Texture2D {
   TextureFormat mFormat = TextureFormat::R32F;
 };
 
-// A single-level r32f 2D array texture (nearest, clamp to edge): one layer per band,
-// written as a layered image2DArray and read with texelFetch from a sampler2DArray.
+// A single-level r16ui 2D array texture of 16-bit codes (nearest, clamp to edge): one
+// layer per band, written as a layered uimage2DArray and read with texelFetch from a
+// usampler2DArray (the sweep's far slopes, shading::encode_far_slope).
 // No storage-block or buffer-texture limit applies, only GL_MAX_TEXTURE_SIZE and
 // GL_MAX_ARRAY_TEXTURE_LAYERS (throws std::runtime_error beyond them).
 class TextureArray {
@@ -109,8 +110,8 @@ class TextureArray {
   TextureArray& operator=(const TextureArray&) = delete;
 
   std::uint32_t id() const { return mId; }
-  void clear(float value) const;  // every texel of every layer
-  std::vector<float> download() const;  // layer-major, row 0 first
+  void clear(std::uint16_t value) const;  // every texel of every layer
+  std::vector<std::uint16_t> download() const;  // layer-major, row 0 first
   void bind_sampler(unsigned unit) const;                       // sampler2DArray at `unit`
   void bind_image(unsigned unit, bool read, bool write) const;  // image2DArray, all layers
 

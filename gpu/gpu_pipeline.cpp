@@ -53,7 +53,7 @@ enum Binding : int {
   kOutput = 5,
   kSchedule = 6,  // a uniform block (horizon_march.comp)
   kCoeffs = 8,
-  kFar = 9,       // texture unit of the sweep's far slopes (horizon_near.comp)
+  kFar = 9,       // texture unit of the sweep's far-slope codes (surface_products.comp, sun_shadow.comp)
   kTable = 11,
   kShadow = 12,
   kSunSchedule = 13,
@@ -66,7 +66,7 @@ enum Binding : int {
 constexpr int kMaxMarchSteps = 256;
 constexpr int kLocalSize = 8;  // 8×8 texels per work group
 constexpr int kSweepLocalSize = 64;  // sweep lines per work group
-constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's image2DArray of far slopes
+constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's uimage2DArray of far-slope codes
 constexpr int kHullImageUnit = 1;    // and its image2D of convex hulls
 // Hull scratch per sweep dispatch: lines × samples × 8 B, at most this (and
 // GL_MAX_TEXTURE_SIZE lines); a heading's lines go in as many dispatches as that needs.
@@ -94,6 +94,12 @@ std::vector<shading::Heading> band_headings(Product product, int w) {
     out.push_back(needs_visibility(product) ? shading::heading_from_math(shading::kTwoPi * k / w)
                                             : shading::heading_from_geographic(shading::band_azimuth(k, w)));
   return out;
+}
+
+// The far-slope codes' constants (shading/horizon_sweep.h), for the kernels that
+// write or read them.
+GlslDefines& add_far_code_defines(GlslDefines& d) {
+  return d.set("FAR_CODE_HALF_RANGE", shading::kFarCodeHalfRange).set("FAR_CODE_MAX", shading::kFarCodeMax);
 }
 
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
@@ -188,7 +194,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
                                                   std::max<std::size_t>(1, kHullBudgetBytes / per_line)}));
   textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
-  far.clear(-std::numeric_limits<float>::infinity());
+  far.clear(shading::kFarCodeNone);
   far.bind_image(kFarImageUnit, false, true);
   set_grid_uniforms(sweep, field);
   sweep.set_uniform("stride", lanes);
@@ -293,11 +299,34 @@ struct GpuProductPipeline::Impl {
   // per-step row-spacing fetches (5–10 % of the march on llvmpipe). Compiled at first use.
   std::optional<ComputeProgram> march_one_dx;
   GlslDefines march_defines;
-  // The sweep (shading/horizon_sweep.h), compiled at the first field that uses it.
-  std::optional<ComputeProgram> near;
-  SweepTextures sweep_textures;
+  SweepTextures sweep_textures;  // the sweep's (shading/horizon_sweep.h)
   std::vector<shading::Heading> band_headings;
-  std::optional<ComputeProgram> products;  // surface_products.comp
+  // surface_products.comp on the march's sigma buffer, and [1] on the sweep's far slopes
+  // (SWEPT: near steps in the kernel). Compiled at first use.
+  std::optional<ComputeProgram> products[2];
+  GlslDefines products_defines;
+  std::optional<glm::vec3> products_sun_dir;  // lit: the sun's direction (unit, toward it)
+  const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept) {
+    if (!products[swept]) {
+      GlslDefines d = products_defines;
+      d.set("SWEPT", swept ? 1 : 0);
+      if (swept) {
+        d.set("RAY_TEXTURES", 1)
+            .set("ONE_DX", 1)  // the sweep's fields have one row spacing
+            .set("NEAR_STEPS", o.march.sweep_near_steps)
+            .set("FAR_BINDING", kFar);
+        add_far_code_defines(d);
+      }
+      products[swept].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
+      const ComputeProgram& p = *products[swept];
+      if (products_sun_dir && p.has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
+        p.set_uniform("sun_dir", products_sun_dir->x, products_sun_dir->y, products_sun_dir->z);
+        for (int c = 0; c < channels; ++c)
+          p.set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(sun_dni[c]));
+      }
+    }
+    return *products[swept];
+  }
   // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
   // (SUN_SWEPT). Compiled at first use.
   std::optional<ComputeProgram> sun[2];
@@ -327,6 +356,7 @@ struct GpuProductPipeline::Impl {
           .set("SWEEP_LOCAL_SIZE", kSweepLocalSize)
           .set("HULL_IMAGE_UNIT", kHullImageUnit)
           .set("FAR_IMAGE_UNIT", kFarImageUnit);
+      add_far_code_defines(d);
       sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
     }
     return *sweeps[sun];
@@ -379,6 +409,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("DISC_RADIUS", disc_radius)
         .set("NEAR_STEPS", shading::sun_shadow_options(options).march.sweep_near_steps)
         .set("FAR_BINDING", kFar);
+    add_far_code_defines(sun);
     k.sun_defines = sun;
     k.sun_heading = u;
     // The sun as uniforms: the kernel's source, hence the driver's compiled-kernel
@@ -478,13 +509,12 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
     if (s.mode == shading::ShadingMode::SkyBrdfTable) k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
-  k.products.emplace(ComputeProgram::from_embedded("surface_products.comp", prod));
-  if (lit && k.products->has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
-    const glm::dvec3& sd = options.lighting->sun.direction;
-    k.products->set_uniform("sun_dir", static_cast<float>(sd.x), static_cast<float>(sd.y), static_cast<float>(sd.z));
-    for (int c = 0; c < k.channels; ++c)
-      k.products->set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(k.sun_dni[c]));
-  }
+  k.products_defines = prod;
+  if (lit) k.products_sun_dir = glm::vec3(options.lighting->sun.direction);
+  // The variant the options will most likely use now (compile time is reported apart);
+  // the other at its first field.
+  k.products_kernel(options, options.march.method == shading::HorizonMethod::Sweep && !options.exact &&
+                                 options.subsample == 1);
 }
 
 GpuProductPipeline::~GpuProductPipeline() = default;
@@ -587,7 +617,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       coarse_chunk_rows = std::max(coarse_chunk_rows, c1 - c0 + 1);
     }
   const std::size_t coarse_bytes = static_cast<std::size_t>(coarse_chunk_rows) * coarse_x.count() * bands * sizeof(float);
-  const std::size_t sigma_bytes = static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
+  // The march's horizons of a chunk (the sweep's are computed in the product kernel).
+  const std::size_t sigma_bytes = sweep ? sizeof(float) : static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
   check_storage_size(sigma_bytes, "GPU pipeline: one row of horizon bands");
   Buffer sigma(sigma_bytes);
   Buffer coarse_sigma;
@@ -632,18 +663,12 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     row_dx_tex.bind_sampler(kRowDx);
   }
 
-  // Stage 2: the march (with the sweep: the sweep over the whole field, then per chunk
-  // the near steps). Stage 3: the product. Row chunks bound a dispatch's length.
+  // Stage 2: the march per chunk, or the sweep over the whole field (the product kernel
+  // adds each texel's near steps). Stage 3: the product. Row chunks bound a dispatch's
+  // length.
   const bool one_dx = !mOptions.exact && shading::one_row_spacing(field);
+  const ComputeProgram& products = k.products_kernel(mOptions, sweep);
   if (sweep) {
-    if (!k.near) {
-      GlslDefines d = common_defines(k.azimuths, mOptions);
-      d.set("RAY_TEXTURES", 1)
-          .set("ONE_DX", 1)  // the sweep's fields have one row spacing
-          .set("NEAR_STEPS", mOptions.march.sweep_near_steps)
-          .set("FAR_BINDING", kFar);
-      k.near.emplace(ComputeProgram::from_embedded("horizon_near.comp", d));
-    }
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
     const auto sweep_start = Clock::now();
     sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
@@ -655,11 +680,14 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     d.set("ONE_DX", 1);
     k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
   }
-  const ComputeProgram& march = sweep ? *k.near : one_dx ? *k.march_one_dx : *k.march;
-  set_grid_uniforms(march, field);
-  if (one_dx) march.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
-  const ComputeProgram& products = *k.products;
+  const ComputeProgram* march = sweep ? nullptr : one_dx ? &*k.march_one_dx : &*k.march;
+  if (march) {
+    set_grid_uniforms(*march, field);
+    if (one_dx) march->set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
+  }
   set_grid_uniforms(products, field);
+  if (sweep && products.has_uniform("grid_dx"))  // absent where no product reads horizons
+    products.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));
   if (products.has_uniform("half_texel_floor")) products.set_uniform("half_texel_floor", sweep ? 1 : 0);
 
@@ -668,14 +696,14 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     // slack is widened to keep the sample at t = D that the CPU keeps.
     const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
                                                              : shading::dem_extent(field);
-    march.set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
+    march->set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
   } else if (!sweep) {
-    march.set_uniform("steps", steps_count);
-    march.set_uniform("z_bound", z_bound);
+    march->set_uniform("steps", steps_count);
+    march->set_uniform("z_bound", z_bound);
   }
   if (s > 1) {
-    march.set_uniform("coarse_width", coarse_x.count());
-    march.set_uniform("coarse_chunk_rows", coarse_chunk_rows);
+    march->set_uniform("coarse_width", coarse_x.count());
+    march->set_uniform("coarse_chunk_rows", coarse_chunk_rows);
   }
 
   shading::ProductBands out{w, h, out_bands, std::vector<float>(texels * out_bands), {}};
@@ -683,27 +711,28 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   GpuTimer march_timer, products_timer;
   for (int r0 = 0; r0 < h; r0 += chunk) {
     const int rows = std::min(chunk, h - r0);
-    for (const ComputeProgram* p : {&march, &products}) {
+    for (const ComputeProgram* p : {march, &products}) {
+      if (!p) continue;
       p->set_uniform("row_offset", r0);
       p->set_uniform("chunk_rows", chunk);
     }
     if (s > 1) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
       const auto [c0, c1] = coarse_span(r0, rows);
-      march.set_uniform("coarse_row_offset", c0);
-      march.set_uniform("coarse_rows", c1 - c0 + 1);
-      march.set_uniform("march_pass", 0);
+      march->set_uniform("coarse_row_offset", c0);
+      march->set_uniform("coarse_rows", c1 - c0 + 1);
+      march->set_uniform("march_pass", 0);
       {
         ScopedGpuTimer timing(march_timer);
-        march.dispatch_covering(coarse_x.count(), c1 - c0 + 1, bands);
+        march->dispatch_covering(coarse_x.count(), c1 - c0 + 1, bands);
       }
       t.march_ms += march_timer.elapsed_ms();
-      march.set_uniform("march_pass", 1);
+      march->set_uniform("march_pass", 1);
     }
-    {
+    if (march) {
       ScopedGpuTimer timing(march_timer);
-      march.dispatch_covering(w, rows, bands);
+      march->dispatch_covering(w, rows, bands);
     }
-    t.march_ms += march_timer.elapsed_ms();
+    if (march) t.march_ms += march_timer.elapsed_ms();
     {
       ScopedGpuTimer timing(products_timer);
       products.dispatch_covering(w, rows);

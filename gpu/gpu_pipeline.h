@@ -15,7 +15,8 @@
 //     the CPU marcher's own step schedule (t_s, level l_s) → raw horizons;
 //     with options.exact, shaders/horizon_exact.comp (the dense exact march) instead;
 //     where shading::uses_sweep, stages 1–2 are the sweep instead: horizon_sweep.comp
-//     over the whole field (far slopes, W layers), then horizon_near.comp per chunk;
+//     over the whole field (far-slope codes, W layers of 16 bits), and stage 3 adds
+//     each texel's near steps itself (no raw-horizon buffer);
 //  3. shaders/surface_products.comp: per texel, Horn normal and the product
 //     (horizon floors, svf, exact skyview slice integrals, or NLP slices → linear
 //     or B-spline wedge assembly → sky×BRDF table shading);

@@ -3,7 +3,15 @@
 // line found; a ray leaving the grid among them (the first step is always checked)
 // takes no far field. GLSL twin of shading::sweep_max_elevation, before its atan.
 //
-// Needs horizon_ray.glsl (included first) and NEAR_STEPS, INV_TWO_R_EFF.
+// Needs horizon_ray.glsl (included first) and NEAR_STEPS, INV_TWO_R_EFF,
+// FAR_CODE_HALF_RANGE.
+
+// shading::decode_far_slope: code 0 is none (-inf).
+float decodeFarSlope(uint code) {
+  if (code == 0u) return uintBitsToFloat(0xff800000u);
+  float x = float(code) / float(FAR_CODE_HALF_RANGE) - 1.0;
+  return x / (1.0 - abs(x));
+}
 
 // Steepest slope (tan of the raw horizon) from texel (i, j) along u; -inf: none.
 float sweptSlope(int i, int j, vec2 u, float far_slope) {

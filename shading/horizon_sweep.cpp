@@ -83,14 +83,27 @@ class Hull {
 
 }  // namespace
 
-std::vector<float> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o) {
+std::uint16_t encode_far_slope(double slope) {
+  if (std::isinf(slope) && slope < 0.0) return kFarCodeNone;
+  const double x = std::isinf(slope) ? 1.0 : slope / (1.0 + std::abs(slope));
+  const double q = kFarCodeHalfRange + std::floor(x * kFarCodeHalfRange);
+  return static_cast<std::uint16_t>(std::clamp(q, 1.0, double{kFarCodeMax}));
+}
+
+float decode_far_slope(std::uint16_t code) {
+  if (code == kFarCodeNone) return -std::numeric_limits<float>::infinity();
+  const double x = static_cast<double>(code) / kFarCodeHalfRange - 1.0;
+  return static_cast<float>(x / (1.0 - std::abs(x)));
+}
+
+std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o) {
   validate(o);
   if (!sweep_applicable(field, o)) throw std::invalid_argument("sweep: needs rows of one spacing and D ≥ the DEM");
   const SweepGeometry g = sweep_geometry(field, u, o.sweep_lines);
   const double drop = o.curvature.drop_per_square_metre() * g.step_m * g.step_m;  // per step²
   const double eps = edge_epsilon_texels(field);
   const int delay = o.sweep_near_steps + 1;
-  std::vector<float> far(field.size(), -std::numeric_limits<float>::infinity());
+  std::vector<std::uint16_t> far(field.size(), kFarCodeNone);
   Hull hull;
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
   for (int line = 0; line < g.lines; ++line) {
@@ -110,14 +123,14 @@ std::vector<float> sweep_far_slopes(const terrain::HeightField& field, Heading u
         const int i = static_cast<int>(p.x), j = static_cast<int>(p.y);
         // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·n·drop/step_m.
         const double slope = hull.max_slope(n, field.at(i, j) - n * drop * n);
-        far[static_cast<std::size_t>(j) * field.width + i] = static_cast<float>((slope + 2.0 * n * drop) / g.step_m);
+        far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * n * drop) / g.step_m);
       }
     }
   }
   return far;
 }
 
-double sweep_max_elevation(const terrain::HeightField& field, int i, int j, Heading u, float far_slope,
+double sweep_max_elevation(const terrain::HeightField& field, int i, int j, Heading u, std::uint16_t far_code,
                            const MarchOptions& o) {
   const double h0 = field.at(i, j);
   const double step = exact_step_length(field, j, u, 0.5);
@@ -130,7 +143,7 @@ double sweep_max_elevation(const terrain::HeightField& field, int i, int j, Head
     if (!on_grid(field, p)) return std::isinf(best) ? best : std::atan(best);  // no far field
     if (k <= o.sweep_near_steps) best = std::max(best, (bilinear_height(field, p) - o.curvature.drop(t) - h0) / t);
   }
-  best = std::max(best, static_cast<double>(far_slope));
+  best = std::max(best, static_cast<double>(decode_far_slope(far_code)));
   return std::isinf(best) ? best : std::atan(best);
 }
 

@@ -31,6 +31,7 @@
 #include "shading/horizon_march.h"
 #include "terrain/height_field.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -65,15 +66,32 @@ struct SweepGeometry {
 
 SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel);
 
-// Far-field slopes of every texel for heading u, [j·width + i]: the max over the
-// texel's owner line's samples n ≥ sweep_near_steps + 1 of (z − t²/(2R) − h₀)/t
-// (t = (n − n₀)·step_m), −∞ if none. Throws std::invalid_argument unless applicable.
-std::vector<float> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options);
+// The far slopes are stored in 16 bits per texel and heading, on the CPU as on the GPU:
+// half a float array's memory, which is W layers of the whole field (and dear to touch
+// on the CI VM). Code q holds x = s/(1 + |s|) ∈ (−1, 1) rounded down to a multiple of
+// 1/h, h = kFarCodeHalfRange: q = h + ⌊x·h⌋, clamped to [1, kFarCodeMax]; 0 is "none"
+// (s = −∞, x = −1). Decoding: x = q/h − 1, s = x/(1 − |x|). Rounding down never raises
+// a horizon (open ground stays open; slope 0 is code h exactly), and as
+// dθ/dx = (1 + |s|)²/(1 + s²) ∈ [1, 2] it lowers one by less than 2/h ≈ 6e-5 rad at
+// every slope (≈ 0.0035°, against the sweep's ~0.4° RMSE). ⌊x·h⌋ rather than
+// ⌊(x + 1)·h⌋: float keeps x·h exact enough near 0, where x + 1 would round. The GLSL
+// twins are in shaders/horizon_sweep.comp and shaders/horizon_near.glsl.
+inline constexpr int kFarCodeHalfRange = 32767;
+inline constexpr int kFarCodeNone = 0;
+inline constexpr int kFarCodeMax = 2 * kFarCodeHalfRange - 1;  // one more would be x = 1, s = +∞
+std::uint16_t encode_far_slope(double slope);
+float decode_far_slope(std::uint16_t code);
 
-// Raw horizon (rad) of texel (i, j): the near steps of its own ray and its far slope;
-// −∞ if the first step already leaves the grid. Equals exact_max_elevation up to the
-// far field's lateral offset.
-double sweep_max_elevation(const terrain::HeightField& field, int i, int j, Heading u, float far_slope,
+// Far-field slope codes of every texel for heading u, [j·width + i]: the max over the
+// texel's owner line's samples n ≥ sweep_near_steps + 1 of (z − t²/(2R) − h₀)/t
+// (t = (n − n₀)·step_m), encode_far_slope'd (kFarCodeNone if none). Throws
+// std::invalid_argument unless applicable.
+std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options);
+
+// Raw horizon (rad) of texel (i, j): the near steps of its own ray and its far slope
+// (code from sweep_far_slopes); −∞ if the first step already leaves the grid. Equals
+// exact_max_elevation up to the far field's lateral offset and its code's rounding.
+double sweep_max_elevation(const terrain::HeightField& field, int i, int j, Heading u, std::uint16_t far_code,
                            const MarchOptions& options);
 
 }  // namespace skylit::shading

@@ -239,7 +239,7 @@ class HorizonSource {
   std::vector<double> coarse_;  // [(cj·count_x + ci)·W + k]
   const MarchOptions& march_;
   bool sweep_;
-  std::vector<std::vector<float>> far_;  // sweep: per heading, [j·width + i]
+  std::vector<std::vector<std::uint16_t>> far_;  // sweep: codes per heading, [j·width + i]
 };
 
 }  // namespace

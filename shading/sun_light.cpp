@@ -128,7 +128,7 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
   std::unique_ptr<HorizonMarcher> marcher;
   if (horizon == SunHorizon::Marched || horizon == SunHorizon::Interpolated)
     marcher = std::make_unique<HorizonMarcher>(field, options.march);
-  std::vector<float> far;
+  std::vector<std::uint16_t> far;  // codes (horizon_sweep.h)
   if (swept) far = sweep_far_slopes(field, heading_from_geographic(sun.azimuth), options.march);
 
   std::vector<float> out(field.size(), std::numeric_limits<float>::quiet_NaN());

@@ -171,7 +171,7 @@ TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
   expect_product_matches(pipeline, projected, "one dx again");
 }
 
-// The sweep (shading/horizon_sweep.h: horizon_sweep.comp, horizon_near.comp) against
+// The sweep (shading/horizon_sweep.h: horizon_sweep.comp, surface_products.comp SWEPT) against
 // the reference's sweep: every product on a projected field with dx ≠ dy (both
 // dominant axes, all quadrants), near steps and lines varied; a geographic field and
 // sub-sampling fall back to the march in both.

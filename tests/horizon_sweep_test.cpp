@@ -75,7 +75,7 @@ std::string case_name(const char* scene, double deg, int near_steps, int lines) 
 
 // Horizons (rad) of every texel, [j·width + i].
 std::vector<double> sweep_horizons(const HeightField& f, Heading u, const MarchOptions& o) {
-  const std::vector<float> far = sweep_far_slopes(f, u, o);
+  const std::vector<std::uint16_t> far = sweep_far_slopes(f, u, o);
   std::vector<double> out(f.size());
   for (int j = 0; j < f.height; ++j)
     for (int i = 0; i < f.width; ++i)
@@ -101,6 +101,12 @@ void expect_equal_horizons(const std::vector<double>& sweep, const std::vector<d
     EXPECT_NEAR(sweep[t], exact[t], tol) << what << " texel " << t;
   }
 }
+
+// The far-slope code's variable x = s/(1 + |s|) (horizon_sweep.h).
+double code_x(double s) { return s / (1.0 + std::abs(s)); }
+// A far slope's code lowers it by less than a step of x, 1/h, and dθ/dx ≤ 2: 2/h rad of
+// horizon angle; plus float rounding.
+const double kCodeTolRad = 2.0 / kFarCodeHalfRange + 1e-6;
 
 struct FarSlope {
   double slope = -kInf;  // −∞: no far sample on the grid
@@ -134,17 +140,20 @@ FarSlope brute_far_slope(const HeightField& f, int i, int j, Heading u, const Ma
 // Every texel's far slope equals the brute force; returns how many maxima lie beyond
 // the first far step (the hull walk had to leave its nearest vertex).
 int expect_far_slopes_match(const HeightField& f, Heading u, const MarchOptions& o, const std::string& what) {
-  const std::vector<float> far = sweep_far_slopes(f, u, o);
+  const std::vector<std::uint16_t> far = sweep_far_slopes(f, u, o);
   int beyond_first = 0;
   for (int j = 0; j < f.height; ++j)
     for (int i = 0; i < f.width; ++i) {
       const FarSlope b = brute_far_slope(f, i, j, u, o);
-      const double s = far[j * f.width + i];
+      const std::uint16_t code = far[j * f.width + i];
       if (std::isinf(b.slope)) {
-        EXPECT_EQ(s, -kInf) << what << " at " << i << "," << j;
+        EXPECT_EQ(code, kFarCodeNone) << what << " at " << i << "," << j;
         continue;
       }
-      EXPECT_NEAR(s, b.slope, 1e-5 * std::abs(b.slope) + 1e-9) << what << " at " << i << "," << j;
+      // Rounded down by less than a step of x = s/(1 + |s|), up to float's rounding.
+      const double below = code_x(b.slope) - code_x(decode_far_slope(code));
+      EXPECT_GE(below, -1e-6) << what << " at " << i << "," << j;
+      EXPECT_LT(below, 1.0 / kFarCodeHalfRange + 1e-6) << what << " at " << i << "," << j;
       beyond_first += b.step > o.sweep_near_steps + 1;
     }
   return beyond_first;
@@ -153,6 +162,37 @@ int expect_far_slopes_match(const HeightField& f, Heading u, const MarchOptions&
 // Geographic azimuths (deg): cardinal, both dominant axes in all four quadrants for
 // dx = 30, dy = 20 (x dominates from atan(30/20) = 56.31° to 123.69°, …), and the tie.
 const std::vector<double> kHeadings = {0, 20, 56.309932474020215, 70, 90, 110, 160, 180, 200, 250, 270, 290, 340};
+
+TEST(HorizonSweep, FarSlopeCodesRoundDownWithinTheirAngleBound) {
+  EXPECT_EQ(encode_far_slope(-kInf), kFarCodeNone);
+  EXPECT_EQ(decode_far_slope(kFarCodeNone), -kInf);
+  EXPECT_EQ(encode_far_slope(kInf), kFarCodeMax);  // a vertical wall: the largest finite code
+  EXPECT_EQ(encode_far_slope(1e30), kFarCodeMax);
+  EXPECT_EQ(encode_far_slope(-1e30), 1);  // finite slopes never read as "none"
+  EXPECT_TRUE(std::isfinite(decode_far_slope(kFarCodeMax)));
+  // Open ground stays open: 0 is a code, and a slope just below it decodes below it.
+  EXPECT_EQ(decode_far_slope(encode_far_slope(0.0)), 0.0f);
+  EXPECT_LT(decode_far_slope(encode_far_slope(-1e-9)), 0.0f);
+  // Decoded slopes rise with the code, and a slope between two codes' takes the lower.
+  for (int q = 1; q < kFarCodeMax; ++q) {
+    const double lo = decode_far_slope(static_cast<std::uint16_t>(q));
+    const double hi = decode_far_slope(static_cast<std::uint16_t>(q + 1));
+    ASSERT_GT(hi, lo) << q;
+    ASSERT_EQ(encode_far_slope(0.5 * (lo + hi)), q) << q;
+  }
+  // The decoded angle is never above the true one and below it by less than 2/h rad,
+  // over slopes from cliffs down (log-spaced, both signs).
+  double worst = 0.0;
+  for (int e = -60; e <= 60; ++e)
+    for (double sign : {-1.0, 1.0}) {
+      const double s = sign * std::pow(10.0, e / 15.0) * 1.2345;
+      const double below = std::atan(s) - std::atan(decode_far_slope(encode_far_slope(s)));
+      EXPECT_GE(below, -1e-7) << s;  // float's rounding of the decoded slope
+      worst = std::max(worst, below);
+    }
+  EXPECT_LT(worst, 2.0 / kFarCodeHalfRange);
+  EXPECT_GT(worst, 0.5 / kFarCodeHalfRange);  // the bound is not loose by a decade
+}
 
 TEST(HorizonSweep, FarSlopesEqualABruteForceOnTheOwnerLine) {
   // Earth radius 3 km: 145 m of drop at 1 km, against 30 m of noise in a 200 m bowl.
@@ -190,12 +230,12 @@ TEST(HorizonSweep, EqualsTheExactMarchWhereEveryTexelLiesOnALine) {
         for (double deg : {0.0, 90.0, 180.0, 270.0}) {
           const std::string what = case_name("rect", deg, k, lines);
           expect_equal_horizons(sweep_horizons(rect, heading_deg(deg), o), exact_horizons(rect, heading_deg(deg), o),
-                                1e-6, what);
+                                kCodeTolRad, what);
         }
         for (double deg : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
           const std::string what = case_name("square", deg, k, lines);
           expect_equal_horizons(sweep_horizons(square, heading_deg(deg), o),
-                                exact_horizons(square, heading_deg(deg), o), 1e-6, what);
+                                exact_horizons(square, heading_deg(deg), o), kCodeTolRad, what);
         }
       }
 }
@@ -320,7 +360,7 @@ TEST(HorizonSweep, PitCentreSeesTheRim) {
   o.curvature.enabled = false;
   for (int k = 0; k < 16; ++k) {
     const Heading u = heading_deg((k + 0.3) * 22.5);
-    const std::vector<float> far = sweep_far_slopes(f, u, o);
+    const std::vector<std::uint16_t> far = sweep_far_slopes(f, u, o);
     const double s = sweep_max_elevation(f, n / 2, n / 2, u, far[(n / 2) * n + n / 2], o);
     EXPECT_NEAR(s, gamma, 1.5e-3) << k;  // as the exact march (horizon_exact_test)
     EXPECT_NEAR(s, exact_max_elevation(f, n / 2, n / 2, u, ExactMarch{0.5, 0.0, o.curvature}), 1.5e-3) << k;
@@ -348,8 +388,8 @@ TEST(HorizonSweep, CliffIsSeenAtItsTopEdgeAndNotFromAbove) {
         const bool east = u.east > 0;
         for (int i = east ? 12 : 21; i <= (east ? 19 : 28); ++i) {
           const double expected = east ? std::atan(height * std::abs(u.east) / ((20 - i) * dx)) : 0.0;
-          // Far slopes are floats: ≈ 1e-7 relative.
-          EXPECT_NEAR(s[j * w + i], expected, 1e-6) << "A" << deg << " K" << k << " at " << i << "," << j;
+          // Far slopes are 16-bit codes: rounded down by less than kCodeTolRad.
+          EXPECT_NEAR(s[j * w + i], expected, kCodeTolRad) << "A" << deg << " K" << k << " at " << i << "," << j;
           EXPECT_NEAR(e[j * w + i], expected, 1e-9) << "A" << deg << " at " << i << "," << j;
         }
       }
@@ -393,8 +433,8 @@ TEST(HorizonSweep, NodataTexelsAreSweptWithTheirFilledHeights) {
     const MarchOptions o = sweep_options(k, 2, 20e3);
     for (double deg : kHeadings) expect_far_slopes_match(f, heading_deg(deg), o, case_name("nodata", deg, k, 2));
     for (double deg : {0.0, 90.0, 180.0, 270.0})
-      expect_equal_horizons(sweep_horizons(f, heading_deg(deg), o), exact_horizons(f, heading_deg(deg), o), 1e-6,
-                            case_name("nodata", deg, k, 2));
+      expect_equal_horizons(sweep_horizons(f, heading_deg(deg), o), exact_horizons(f, heading_deg(deg), o),
+                            kCodeTolRad, case_name("nodata", deg, k, 2));
   }
   // The tower is seen: 5 texels (100 m) west of it, looking east, above 60°.
   EXPECT_GT(sweep_horizons(f, heading_deg(90), sweep_options(0, 2))[12 * f.width + 10], 60 * kDeg);
@@ -447,7 +487,7 @@ TEST(HorizonSweep, ReferencePipelineSweepsWhereItAppliesAndMarchesElsewhere) {
   o.march.azimuths = w;
   ASSERT_TRUE(uses_sweep(f, o));
   std::vector<Heading> headings;
-  std::vector<std::vector<float>> far;
+  std::vector<std::vector<std::uint16_t>> far;
   for (int k = 0; k < w; ++k) {
     headings.push_back(heading_from_geographic(band_azimuth(k, w)));
     far.push_back(sweep_far_slopes(f, headings.back(), o.march));

@@ -1,6 +1,7 @@
 #include "shading/sh_basis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -57,17 +58,55 @@ double eval_basis_one(int l, int m, const glm::dvec3& d) {
   return m > 0 ? std::sqrt(2.0) * p * std::cos(am * phi) : std::sqrt(2.0) * p * std::sin(am * phi);
 }
 
+namespace {
+
+// K_lm = sh_norm(l, m), m ≥ 0, at [l(l+1)/2 + m], computed once: sh_norm's
+// factorial-ratio loop and sqrt per coefficient and direction made eval_basis
+// O(n³). Sized for reconstruct(), which takes orders up to 2·kMaxOrder; bands
+// beyond it fall back to sh_norm. √2 is not folded in: eval_basis stays bitwise
+// what the per-(l, m) sh_norm·assoc_legendre calls gave.
+constexpr int kNormBands = 2 * kMaxOrder;
+using NormTable = std::array<double, kNormBands * (kNormBands + 1) / 2>;
+
+const NormTable& norm_table() {
+  static const NormTable table = [] {
+    NormTable t{};
+    for (int l = 0; l < kNormBands; ++l)
+      for (int m = 0; m <= l; ++m) t[l * (l + 1) / 2 + m] = sh_norm(l, m);
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
 void eval_basis(int order, const glm::dvec3& d, std::span<double> out) {
   if (out.size() < static_cast<std::size_t>(num_coeffs(order)))
     throw std::invalid_argument("eval_basis: output span too small");
   const double z = std::clamp(d.z, -1.0, 1.0);
+  const double somx2 = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)));  // sin θ, as assoc_legendre has it
   const double rxy = std::hypot(d.x, d.y);
   // cos(mφ), sin(mφ) by the Chebyshev recurrence; φ undefined at the poles → 0.
   const double c1 = rxy > 0 ? d.x / rxy : 1.0, s1 = rxy > 0 ? d.y / rxy : 0.0;
   double cm = 1.0, sm = 0.0;
+  const NormTable& norms = norm_table();
+  double pmm = 1.0;  // P_m^m
   for (int m = 0; m < order; ++m) {
+    // One pass per m with assoc_legendre's operations in its order, so the values
+    // are bitwise the same: P_m^m = P_{m−1}^{m−1}·(−(2m−1) sin θ), P_{m+1}^m, then
+    // upward in l.
+    if (m > 0) pmm *= -(2.0 * m - 1.0) * somx2;
+    double pl = pmm, pl_1 = 0.0;  // P_l^m, P_{l−1}^m
     for (int l = m; l < order; ++l) {
-      const double p = sh_norm(l, m) * assoc_legendre(l, m, z);
+      if (l == m + 1) {
+        pl_1 = pl;
+        pl = z * (2 * m + 1) * pmm;
+      } else if (l > m + 1) {
+        const double next = ((2 * l - 1) * z * pl - (l + m - 1) * pl_1) / (l - m);
+        pl_1 = pl;
+        pl = next;
+      }
+      const double p = (l < kNormBands ? norms[l * (l + 1) / 2 + m] : sh_norm(l, m)) * pl;
       if (m == 0) {
         out[index(l, 0)] = p;
       } else {

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 using namespace skylit;
 
@@ -57,6 +59,34 @@ TEST(ShBasis, MatchesHardCodedLowOrderValues) {
   EXPECT_NEAR(v[15], -0.590043589926644 * x * (x * x - 3 * y * y), 1e-14);
   for (int l = 0; l < 4; ++l)
     for (int m = -l; m <= l; ++m) EXPECT_NEAR(sh::eval_basis_one(l, m, d), v[sh::index(l, m)], 1e-14);
+}
+
+TEST(ShBasis, FastBasisMatchesDirectFormula) {
+  // eval_basis (tabled norms, one Legendre pass per m, Chebyshev cos/sin) against
+  // eval_basis_one (sh_norm, assoc_legendre, atan2) for every order it serves:
+  // 1..kMaxOrder, 2·kMaxOrder (reconstruct) and beyond (norms not tabled).
+  std::vector<glm::dvec3> dirs = {{0, 0, 1},  {0, 0, -1}, {1, 0, 0},         {0, 1, 0},
+                                  {-1, 0, 0}, {0, -1, 0}, {1e-9, -2e-9, 1}, {-3e-12, 1e-12, -1}};
+  std::mt19937_64 rng(12345);
+  std::normal_distribution<double> g;
+  while (dirs.size() < 1000) {
+    const glm::dvec3 v(g(rng), g(rng), g(rng));
+    if (glm::length(v) > 1e-3) dirs.push_back(glm::normalize(v));
+  }
+  std::vector<int> orders;
+  for (int n = 1; n <= sh::kMaxOrder; ++n) orders.push_back(n);
+  orders.push_back(2 * sh::kMaxOrder);
+  orders.push_back(2 * sh::kMaxOrder + 2);
+  for (int order : orders) {
+    sh::Vec y(sh::num_coeffs(order));
+    for (const glm::dvec3& d : dirs) {
+      sh::eval_basis(order, d, y);
+      for (int l = 0; l < order; ++l)
+        for (int m = -l; m <= l; ++m)
+          ASSERT_NEAR(y[sh::index(l, m)], sh::eval_basis_one(l, m, d), 1e-13)
+              << "order " << order << " l " << l << " m " << m << " dir " << d.x << ' ' << d.y << ' ' << d.z;
+    }
+  }
 }
 
 TEST(ShBasis, ProjectReconstructRoundTrip) {

@@ -178,6 +178,16 @@ void main() {
     return;
   }
   float y = (sunHorizon(i, j) - sun_elevation) / DISC_RADIUS;
+  // The unit disc wholly below the level horizon, or wholly above it and the tangent
+  // line (signed distance tangent.z >= 1): most texels, and no polygon to clip.
+  if (y >= 1.0) {
+    shadow[texel] = 0.0;
+    return;
+  }
+  if (y <= -1.0 && tangent.z >= 1.0) {
+    shadow[texel] = 1.0;
+    return;
+  }
   Polygon poly;
   poly.v[0] = vec2(-2.0, -2.0);
   poly.v[1] = vec2(2.0, -2.0);

@@ -68,12 +68,23 @@ constexpr int kLocalSize = 8;  // 8×8 texels per work group
 constexpr int kSweepLocalSize = 64;  // sweep lines per work group
 constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's uimage2DArray of far-slope codes
 constexpr int kHullImageUnit = 1;    // and its image2D of convex hulls
-// Hull scratch per sweep dispatch: lines × samples × 8 B, at most this (and
-// GL_MAX_TEXTURE_SIZE lines); a heading's lines go in as many dispatches as that needs.
-// Small because fresh memory is dear on the 2-core VMs CI runs on (≈ 3 ms per MiB of
-// first touch, measured): 16 MiB is still ~1000 lines per dispatch at 1024², plenty
-// for llvmpipe's 2×8 lanes; a large GPU would want more lanes in flight.
-constexpr std::size_t kHullBudgetBytes = std::size_t{16} << 20;
+// Hull scratch per sweep dispatch: lines × samples × 8 B (and ≤ GL_MAX_TEXTURE_SIZE
+// lines); a heading's lines go in as many dispatches as the budget needs, each of at
+// least kMinSweepGroups work groups (both llvmpipe threads busy, and their tails
+// balanced). On a software rasterizer the budget is small: fresh memory is dear there
+// (≈ 3 ms per MiB of first touch on the 2-core CI VM; 16 → 4 MiB took 1024²'s sweep
+// from 1.14 to 1.01 s), and 2×8 SIMD lanes need few lines in flight. A GPU wants every
+// line of a heading in one dispatch.
+constexpr std::size_t kSoftwareHullBudgetBytes = std::size_t{4} << 20;
+constexpr std::size_t kHullBudgetBytes = std::size_t{512} << 20;
+constexpr int kMinSweepGroups = 4;
+
+// Mesa's CPU drivers (llvmpipe, softpipe) name themselves in GL_RENDERER.
+bool software_renderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string r = renderer ? renderer : "";
+  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -191,8 +202,10 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
                              std::to_string((max_size + 1) / 2) + " texels along an azimuth; --horizons march has no such limit)");
   int lanes = 1;
   for (const shading::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
+  const std::size_t budget = software_renderer() ? kSoftwareHullBudgetBytes : kHullBudgetBytes;
+  const std::size_t budget_lanes = std::max<std::size_t>(kMinSweepGroups * kSweepLocalSize, budget / per_line);
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
-                                                  std::max<std::size_t>(1, kHullBudgetBytes / per_line)}));
+                                                  budget_lanes}));
   textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
   far.clear(shading::kFarCodeNone);
   far.bind_image(kFarImageUnit, false, true);

@@ -54,12 +54,15 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
   const ShadingMode mode = s.mode;
   const bool lit = shading::uses_lighting(product, options);
   ShadingSetup out;
-  // The skies, as the reference's SkyShading / LitShading build them.
+  // The skies, as the reference's SkyShading / LitShading build them (same symmetry
+  // flag too: the GPU's table must be the reference's, texel for texel).
   std::vector<shading::Radiance> skies;
+  bool z_symmetric = true;  // the uniform sky
   if (lit) {
     const shading::Lighting& l = *options.lighting;
     const bool rgb = product == shading::Product::Shaded && l.colour;
     out.channels = rgb ? 3 : 1;
+    z_symmetric = l.sky && l.sky->azimuthally_symmetric();
     for (int c = 0; c < out.channels; ++c) {
       out.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
       if (l.sky) skies.push_back(shading::channel_radiance(l.sky, rgb, c));
@@ -73,7 +76,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
   std::vector<std::unique_ptr<shading::Shader>> shaders;
   std::vector<sh::Vec> sky_sh;
   for (const shading::Radiance& r : skies) {
-    shading::SkyInput in = shading::sky_input(mode, s.sh_order, r);
+    shading::SkyInput in = shading::sky_input(mode, s.sh_order, r, z_symmetric);
     if (mode != ShadingMode::SkyBrdfTable) sky_sh.push_back(in.sh);
     shaders.push_back(std::make_unique<shading::Shader>(settings, in));
   }
@@ -100,7 +103,8 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
     for (const sh::Vec& v : sky_sh)
       for (double x : v) out.sky.push_back(static_cast<float>(x));
     // The lobe ZH does not depend on the sky: Lambert, from a Shader as the reference has it.
-    const shading::Shader lobe_shader(settings, shading::sky_input(mode, s.sh_order, shading::uniform_sky_radiance()));
+    const shading::Shader lobe_shader(settings,
+                                      shading::sky_input(mode, s.sh_order, shading::uniform_sky_radiance(), true));
     const std::span<const double> zh = mode == ShadingMode::LogBrdf ? lobe_shader.log_lobe_zh() : lobe_shader.lobe_zh();
     for (const sh::TripleEntry& e : sh::triple_product(s.sh_order).entries()) {
       out.gamma.push_back(static_cast<std::uint32_t>(e.i | e.j << 8 | e.k << 16));

@@ -104,8 +104,9 @@ std::vector<Heading> math_headings(int w) {
 
 }  // namespace
 
-SkyInput sky_input(ShadingMode mode, int order, Radiance radiance) {
+SkyInput sky_input(ShadingMode mode, int order, Radiance radiance, bool z_symmetric) {
   SkyInput in;
+  in.z_symmetric = z_symmetric;
   if (mode != ShadingMode::SkyBrdfTable)
     in.sh = quad::project(order, quad::sphere_product_rule(64, 128, 0.0, 1.0), radiance);
   in.radiance = std::move(radiance);
@@ -118,11 +119,11 @@ namespace {
 // chosen mode; LogBrdf works from the log-visibility, the others from V.
 class SkyShading {
  public:
-  SkyShading(ShadingMode mode, int order, Radiance radiance) {
+  SkyShading(ShadingMode mode, int order, Radiance radiance, bool z_symmetric) {
     ShadingSettings settings;
     settings.mode = mode;
     settings.order = order;
-    shader_ = std::make_unique<Shader>(settings, sky_input(mode, order, std::move(radiance)));
+    shader_ = std::make_unique<Shader>(settings, sky_input(mode, order, std::move(radiance), z_symmetric));
   }
   bool needs_log() const { return shader_->settings().mode == ShadingMode::LogBrdf; }
   double radiance(std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n) const {
@@ -142,7 +143,8 @@ class LitShading {
     for (int c = 0; c < channels; ++c) {
       dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
       if (!l.sky) continue;
-      sky_.push_back(std::make_unique<SkyShading>(mode, order, channel_radiance(l.sky, rgb, c)));
+      sky_.push_back(std::make_unique<SkyShading>(mode, order, channel_radiance(l.sky, rgb, c),
+                                                  l.sky->azimuthally_symmetric()));
     }
   }
   int channels() const { return static_cast<int>(dni_.size()); }
@@ -308,7 +310,7 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
     if (lit)
       lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
     else
-      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order, uniform_sky_radiance());
+      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order, uniform_sky_radiance(), true);
   }
   // Tone map of the lit `shaded` (lighting.h): E → linear display value.
   const double display_per_irradiance =

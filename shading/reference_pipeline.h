@@ -58,6 +58,8 @@ Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, in
 double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting);
 // Sky input of a Shader in `mode`: the full-frequency radiance (table mode) or its
 // SH projection over the upper hemisphere (the skies are 0 below the horizon).
-SkyInput sky_input(ShadingMode mode, int order, Radiance radiance);
+// z_symmetric: the radiance is symmetric about z (SkyInput); uniform_sky_radiance()
+// is, a channel_radiance(sky, …) is if sky->azimuthally_symmetric().
+SkyInput sky_input(ShadingMode mode, int order, Radiance radiance, bool z_symmetric);
 
 }  // namespace skylit::shading

@@ -96,7 +96,7 @@ void Shader::set_sky(const SkyInput& sky) {
   if (settings_.mode == ShadingMode::SkyBrdfTable) {
     if (!sky.radiance) throw std::invalid_argument("Shader: table mode needs the sky radiance function");
     table_ = std::make_unique<SkyBrdfTable>(settings_.order, settings_.brdf.lobe_exponent(), sky.radiance,
-                                            table_grid_for(settings_), settings_.table_quadrature);
+                                            table_grid_for(settings_), settings_.table_quadrature, sky.z_symmetric);
     return;
   }
   if (sky.sh.size() != static_cast<std::size_t>(sh::num_coeffs(settings_.order)))

@@ -81,8 +81,9 @@ struct ShadingSettings {
 AxisGrid table_grid_for(const ShadingSettings& settings);
 
 struct SkyInput {
-  sh::Vec sh;         // order-n SH of the radiance: LogBrdf, TripleProduct
-  Radiance radiance;  // full-frequency radiance: SkyBrdfTable
+  sh::Vec sh;                // order-n SH of the radiance: LogBrdf, TripleProduct
+  Radiance radiance;         // full-frequency radiance: SkyBrdfTable
+  bool z_symmetric = false;  // radiance symmetric about z (SkyBrdfTable's shortcut)
 };
 
 class Shader {

@@ -2,6 +2,7 @@
 
 #include "shading/brdf.h"
 #include "shading/quadrature.h"
+#include "shading/sh_rotation.h"
 
 #include <glm/geometric.hpp>
 
@@ -82,7 +83,8 @@ sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm:
   return out;
 }
 
-SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisGrid& grid, const LobeQuadrature& q)
+SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisGrid& grid, const LobeQuadrature& q,
+                           bool z_symmetric)
     : order_(order), lobe_exponent_(r), grid_(grid) {
   if (order < sh::kMinOrder || order > sh::kMaxOrder) throw std::invalid_argument("SkyBrdfTable: order");
   if (!(r > 0.0)) throw std::invalid_argument("SkyBrdfTable: lobe exponent must be > 0");
@@ -99,10 +101,13 @@ SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisG
     try {
       for (int i = next_row++; i < grid.n_theta; i = next_row++) {
         // A pole row (θ = 0 or π) is one direction: project once, copy along φ.
+        // A z-symmetric sky: T(Rz(φ)·a) = rotate_z(T(a), φ), so project at φ_0 = 0 only.
         const bool pole = grid.theta(i) < 1e-12 || grid.theta(i) > sh::kPi - 1e-12;
-        sh::Vec t;
+        sh::Vec t, t0;
         for (int j = 0; j < grid.n_phi; ++j) {
-          if (!pole || j == 0) t = sky_lobe_projection(order, r, sky, grid.axis(i, j), q);
+          if (j == 0) t = t0 = sky_lobe_projection(order, r, sky, grid.axis(i, j), q);
+          else if (!pole && z_symmetric) t = sh::rotate_z(t0, grid.phi(j));
+          else if (!pole) t = sky_lobe_projection(order, r, sky, grid.axis(i, j), q);
           for (int k = 0; k < nc; ++k) values_[texel_index(k / 4, i, j, k % 4)] = t[k];
         }
       }

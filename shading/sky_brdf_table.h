@@ -14,6 +14,11 @@
 // horizon z = 0 — sky models are 0 below it (sky_model.h), and a smooth sky is
 // integrated just as well.
 //
+// A sky symmetric about z (declared: a Radiance cannot be inspected) needs one
+// projection per θ row: T(Rz(φ)·a) = rotate_z(T(a), φ). Where |a_z| ≥ 0.9 the
+// quadrature frame is not carried by Rz (frame_about), so those entries differ
+// from a direct build by the quadrature's own error (test: SkyBrdfTable.ZSymmetric*).
+//
 // Grid and memory layout (the GPU uploads texels() unchanged):
 //   axis(i, j) = (sin θ_i cos φ_j, sin θ_i sin φ_j, cos θ_i),
 //   θ_i = i·θ_max/(n_theta − 1), i < n_theta  (node-centred, both ends included),
@@ -72,8 +77,10 @@ class SkyBrdfTable {
   // order in [1, sh::kMaxOrder], lobe_exponent r > 0 (1 = Lambert), n_theta ≥ 2,
   // n_phi ≥ 1, θ_max in (0, π]; throws std::invalid_argument otherwise. Rows are
   // built on all hardware threads: `sky` must be safe to call concurrently.
+  // z_symmetric: the caller vouches that sky(Rz·ω) = sky(ω) for every rotation Rz
+  // about z; rows are then one projection rotated along φ (≈n_phi× faster).
   SkyBrdfTable(int order, double lobe_exponent, const Radiance& sky, const AxisGrid& grid,
-               const LobeQuadrature& quad = {});
+               const LobeQuadrature& quad = {}, bool z_symmetric = false);
 
   int order() const { return order_; }
   double lobe_exponent() const { return lobe_exponent_; }

@@ -77,6 +77,12 @@ double CieSky::relative_luminance(const glm::dvec3& dir) const {
 
 Rgb CieSky::radiance(const glm::dvec3& dir) const { return zenith_ * relative_luminance(dir); }
 
+bool CieSky::azimuthally_symmetric() const {
+  if (type_ == kCieTraditionalOvercast) return true;
+  const CieParams p = cie_standard_sky(type_);
+  return p.c == 0.0 && p.e == 0.0;
+}
+
 double CieSky::diffuse_horizontal_per_zenith() const {
   const auto rule = upper_hemisphere_rule(kDenseNz, kDenseNphi);
   double s = 0.0;

@@ -38,6 +38,8 @@ class CieSky final : public SkyModel {
   static CieSky from_diffuse_horizontal(int type, const glm::dvec3& sun_direction, const Rgb& diffuse_horizontal);
 
   Rgb radiance(const glm::dvec3& dir) const override;
+  // Types 1, 3, 5 (indicatrix c = e = 0, so f ≡ 1) and 16 depend on Z only.
+  bool azimuthally_symmetric() const override;
   double relative_luminance(const glm::dvec3& dir) const;  // L/L_z, 0 below the horizon
   // ∫ (L/L_z) cos θ dω over the sky (sr): D / L_z, by dense quadrature.
   double diffuse_horizontal_per_zenith() const;

@@ -22,6 +22,9 @@ struct SkyModel {
   virtual ~SkyModel() = default;
   // RGB radiance (W m⁻² sr⁻¹) arriving from unit direction `dir`; 0 if dir.z ≤ 0.
   virtual Rgb radiance(const glm::dvec3& dir) const = 0;
+  // True only if radiance(Rz·dir) = radiance(dir) for every rotation Rz about z
+  // (declared, for the sky×BRDF table's rotation shortcut, sky_brdf_table.h).
+  virtual bool azimuthally_symmetric() const { return false; }
 };
 
 // Rec. 709 luminance weights: the broadband scalar of an RGB quantity.
@@ -46,6 +49,7 @@ class UniformSky final : public SkyModel {
  public:
   explicit UniformSky(const Rgb& radiance = Rgb(1.0));
   Rgb radiance(const glm::dvec3& dir) const override;
+  bool azimuthally_symmetric() const override { return true; }
 
  private:
   Rgb radiance_;

@@ -34,8 +34,11 @@
 #include <string>
 
 #include "gpu/gpu_pipeline.h"
+#include "gpu/shading_setup.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/reference_pipeline.h"
+#include "shading/sky_cie.h"
 #include "shading/shading_modes.h"
 #include "shading/sky_model.h"
 #include "shading/wedge.h"
@@ -197,6 +200,27 @@ TEST_F(GpuShadingModesTest, ShModesMatchReference) {
     const Diff vs_table = compare(gpu, table_irradiance, kIrradianceRelTol, true, 1e300, 0.0);
     std::cout << "[ " << mode_name << " ] vs table irradiance (GPU): max rel " << vs_table.max_rel << "\n";
     EXPECT_GT(vs_table.max_rel, 10.0 * kIrradianceRelTol);
+  }
+}
+
+// The uploaded tables are the reference's (SkyShading, LitShading), texel for texel,
+// built with the sky's symmetry flag (a z-symmetric sky's rows are rotated, which
+// moves near-zenith entries by ~1e-6: too little for the image comparisons to notice).
+TEST(ShadingSetup, TablesUseTheSkysSymmetryFlag) {
+  const auto table = [](const shading::Radiance& sky, bool z_symmetric) {
+    const shading::SkyBrdfTable t(sh::kDefaultOrder, 1.0, sky, shading::AxisGrid::hemisphere(), {}, z_symmetric);
+    return std::vector<float>(t.texels().begin(), t.texels().end());
+  };
+  const auto uploaded = [](const ProductOptions& o) {
+    GlslDefines d;
+    return shading_setup(Product::Shaded, o, 0, 1, d).sky;
+  };
+  ProductOptions o;
+  EXPECT_EQ(uploaded(o), table(shading::uniform_sky_radiance(), true));
+  const glm::dvec3 sun = sky::direction_from_azimuth_elevation(2.0, 0.5);
+  for (int type : {16, 12}) {
+    o.lighting = shading::Lighting{std::make_shared<sky::CieSky>(type, sun, sky::Rgb(1.0)), {sun, sky::Rgb(0.0)}};
+    EXPECT_EQ(uploaded(o), table(shading::channel_radiance(o.lighting->sky, false, 0), type == 16)) << type;
   }
 }
 

@@ -250,6 +250,34 @@ TEST(CieSky, OvercastSkiesAndDiffuseNormalisation) {
   }
 }
 
+TEST(SkyModel, AzimuthalSymmetryIsDeclaredExactlyWhereTheSkyHasIt) {
+  // Declared (the sky×BRDF table relies on it): the radiance must not change under
+  // any rotation about z, and the other skies must visibly change.
+  const auto sun = direction_from_azimuth_elevation(2.0, 30 * kDeg);
+  const auto max_change = [](const SkyModel& s) {
+    double worst = 0.0;
+    for (double el : {5.0, 30.0, 60.0, 85.0})
+      for (double az = 0.0; az < 2 * kPi; az += 0.25)
+        for (double turn : {0.7, 2.9}) {
+          const double a = luminance(s.radiance(direction_from_azimuth_elevation(az, el * kDeg)));
+          const double b = luminance(s.radiance(direction_from_azimuth_elevation(az + turn, el * kDeg)));
+          worst = std::max(worst, std::abs(a - b) / a);
+        }
+    return worst;
+  };
+  for (int type = 1; type <= 16; ++type) {
+    const CieSky s(type, sun, Rgb(1.0));
+    const bool expected = type == 1 || type == 3 || type == 5 || type == 16;  // ISO 15469: "azimuthal uniformity"
+    EXPECT_EQ(s.azimuthally_symmetric(), expected) << type;
+    if (expected)
+      EXPECT_LE(max_change(s), 1e-14) << type;
+    else
+      EXPECT_GT(max_change(s), 1e-2) << type;
+  }
+  EXPECT_TRUE(UniformSky(Rgb(2.0)).azimuthally_symmetric());
+  EXPECT_FALSE(PreethamSky(sun, 3.0).azimuthally_symmetric());
+}
+
 TEST(CieSky, ClearSkyBrightestTowardTheSun) {
   const auto sun = direction_from_azimuth_elevation(90 * kDeg, 30 * kDeg);
   const CieSky s(12, sun, Rgb(1.0));

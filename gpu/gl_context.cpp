@@ -217,10 +217,11 @@ void HeadlessContext::release_current() const {
   eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
-bool HeadlessContext::is_software() const {
-  return mRenderer.find("llvmpipe") != std::string::npos ||
-         mRenderer.find("softpipe") != std::string::npos;
+bool is_software_renderer(std::string_view renderer) {
+  return renderer.find("llvmpipe") != std::string_view::npos || renderer.find("softpipe") != std::string_view::npos;
 }
+
+bool HeadlessContext::is_software() const { return is_software_renderer(mRenderer); }
 
 void throw_on_gl_error(std::string_view where) {
   std::string codes;

@@ -46,6 +46,9 @@ class HeadlessContext {
   std::string mRenderer, mVersion, mPlatform;
 };
 
+// True for Mesa's CPU rasterisers (llvmpipe, softpipe), by their GL_RENDERER string.
+bool is_software_renderer(std::string_view renderer);
+
 // Throws std::runtime_error("<where>: GL error 0x…") if glGetError reports one
 // (all pending errors are drained). Needs a current context.
 void throw_on_gl_error(std::string_view where);

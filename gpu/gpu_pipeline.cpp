@@ -79,11 +79,9 @@ constexpr std::size_t kSoftwareHullBudgetBytes = std::size_t{4} << 20;
 constexpr std::size_t kHullBudgetBytes = std::size_t{512} << 20;
 constexpr int kMinSweepGroups = 4;
 
-// Mesa's CPU drivers (llvmpipe, softpipe) name themselves in GL_RENDERER.
 bool software_renderer() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string r = renderer ? renderer : "";
-  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
+  return is_software_renderer(renderer ? renderer : "");
 }
 
 using Clock = std::chrono::steady_clock;

@@ -45,8 +45,7 @@ layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 
 layout(std430, binding = HEADINGS_BINDING) readonly buffer Headings { vec2 headings[]; };
 // 1 byte per texel (1 = valid), four texels per word, little end first.
 layout(std430, binding = VALID_BINDING) readonly buffer Valid { uint valid_bytes[]; };
-// Raw horizons (rad) of the row chunk: [(k*chunk_rows + j - row_offset)*W + i].
-// Output, band-major over the chunk the same way.
+// Output, band-major over the row chunk: [(k*chunk_rows + j - row_offset)*W + i].
 layout(std430, binding = OUTPUT_BINDING) writeonly buffer Output { float values[]; };
 
 uniform int row_offset;  // first row of this dispatch
@@ -89,8 +88,9 @@ float rawHorizon(int k, int j, int i) {
   return isinf(s) ? s : atan(s);
 }
 #else
-// The march's sigma buffer, read as an r32f buffer texture: on Mesa llvmpipe a
-// texelFetch is a vector gather where an SSBO load is a scalar loop over the SIMD lanes.
+// The march's raw horizons (rad) of the row chunk, laid out as the output (chunkIndex),
+// read as an r32f buffer texture: on Mesa llvmpipe a texelFetch is a vector gather
+// where an SSBO load is a scalar loop over the SIMD lanes.
 layout(binding = SIGMA_BINDING) uniform samplerBuffer sigma_tex;
 float rawHorizon(int k, int j, int i) { return texelFetch(sigma_tex, chunkIndex(k, j, i)).r; }
 float horizonSlope(int k, int j, int i) {

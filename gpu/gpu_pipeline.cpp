@@ -311,6 +311,7 @@ struct GpuProductPipeline::Impl {
   std::optional<ComputeProgram> march_one_dx;
   GlslDefines march_defines;
   SweepTextures sweep_textures;  // the sweep's (shading/horizon_sweep.h)
+  bool last_compute_swept = false;  // far_codes() holds the last compute()'s
   std::vector<shading::Heading> band_headings;
   // surface_products.comp on the march's sigma buffer, and [1] on the sweep's far slopes
   // (SWEPT: near steps in the kernel). Compiled at first use.
@@ -530,6 +531,12 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
 
 GpuProductPipeline::~GpuProductPipeline() = default;
 
+std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
+  const Impl& k = *mImpl;
+  if (k.sweep_textures.far_size[0] == 0 || !k.last_compute_swept) return {};
+  return k.sweep_textures.far.download();
+}
+
 shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& field,
                                                   const shading::ProgressCallback& progress,
                                                   GpuPipelineTimings* timings) const {
@@ -571,6 +578,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
   const bool sweep = shading::uses_sweep(field, mOptions);  // as the reference decides
+  k.last_compute_swept = sweep;
   if (!mOptions.exact && !sweep) {
     const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
     steps_count = static_cast<int>(steps.distances.size());

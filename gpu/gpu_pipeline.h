@@ -30,7 +30,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "shading/products.h"
 #include "terrain/height_field.h"
@@ -85,6 +87,11 @@ class GpuProductPipeline {
   // the fraction of rows done, from the calling thread.
   shading::ProductBands compute(const terrain::HeightField& field, const shading::ProgressCallback& progress = {},
                                 GpuPipelineTimings* timings = nullptr) const;
+
+  // Diagnostics: the sweep's far-slope codes (shading::sweep_far_slopes' layout, one
+  // field-sized layer per band, band-major) as the last compute() left them; empty if it
+  // did not sweep. Tests compare them with the reference's codes.
+  std::vector<std::uint16_t> far_codes() const;
 
  private:
   struct Impl;

@@ -25,6 +25,8 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
+#include "shading/azimuth.h"
+#include "shading/horizon_sweep.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
 #include "terrain/dem_reader.h"
@@ -202,6 +204,44 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
   for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
   ASSERT_FALSE(shading::uses_sweep(geographic, o));
   expect_product_matches(geographic, Product::Horizon, o, "sweep asked, geographic: march");
+}
+
+// The far-slope codes themselves, GPU (float) against the reference (double): both round
+// x = s/(1 + |s|) down to a code (shading::encode_far_slope), so they differ only where
+// the two roundings of the slope straddle a code boundary — by one code — and "none"
+// (no far sample) must agree exactly. Products compare within tolerances far wider than a
+// code (6e-5 rad), so only this test would see, say, rounding to nearest on the GPU.
+TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
+  HeightField field = synthetic_field();
+  field.dy = 21.0;
+  ProductOptions o = default_options();
+  o.march.method = shading::HorizonMethod::Sweep;
+  o.march.azimuths = 8;
+  const GpuProductPipeline pipeline(Product::Svf, o);
+  pipeline.compute(field);
+  const std::vector<std::uint16_t> gpu = pipeline.far_codes();
+  ASSERT_EQ(gpu.size(), field.size() * 8);
+  std::size_t equal = 0, finite = 0;
+  int worst = 0;
+  for (int k = 0; k < 8; ++k) {
+    const auto cpu = shading::sweep_far_slopes(field, shading::heading_from_geographic(shading::band_azimuth(k, 8)),
+                                               o.march);
+    for (std::size_t t = 0; t < field.size(); ++t) {
+      const int g = gpu[k * field.size() + t], c = cpu[t];
+      if (g == shading::kFarCodeNone || c == shading::kFarCodeNone) {
+        EXPECT_EQ(g, c) << "band " << k << " texel " << t;
+        continue;
+      }
+      ++finite;
+      equal += g == c;
+      worst = std::max(worst, std::abs(g - c));
+    }
+  }
+  std::cout << "[ far codes ] " << finite << " finite, " << 100.0 * equal / finite << "% equal, worst " << worst
+            << " code(s)\n";
+  EXPECT_GT(finite, field.size() * 4);  // most texels have a far field
+  EXPECT_LE(worst, 1);
+  EXPECT_GE(equal, 0.98 * finite);  // observed 99.8 %: float slopes err by ~1e-6, a code is 3e-5 of x
 }
 
 // A sweep line holds 2·side − 1 samples in an image column: past GL_MAX_TEXTURE_SIZE the

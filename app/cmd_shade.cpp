@@ -83,6 +83,7 @@ void print_timings(double read_ms, const BackendReport& r, double write_ms) {
     line("compile kernels", r.compile_ms);
     line("upload heights", r.gpu.upload_ms);
     line("pyramid build", r.gpu.pyramid_ms);
+    line("horizon sweep", r.gpu.sweep_ms);
     // Mesa llvmpipe runs compute outside its timer queries (they read ≈ 0): then only the
     // stages' sum is known, inside "compute".
     if (r.gpu.sun_ms + r.gpu.march_ms + r.gpu.products_ms > 1e-3 * r.compute_ms) {

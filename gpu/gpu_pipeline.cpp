@@ -378,9 +378,17 @@ struct GpuProductPipeline::Impl {
   double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
                    std::size_t& uploaded, Buffer& shadow) {
     const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
-    const TextureArray* far =
-        swept ? &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, field, sweep_textures) : nullptr;
-    return sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
+    const TextureArray* far = nullptr;
+    double sweep_ms = 0.0;
+    if (swept) {
+      GpuTimer timer;
+      {
+        ScopedGpuTimer timing(timer);
+        far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, field, sweep_textures);
+      }
+      sweep_ms = timer.elapsed_ms();
+    }
+    return sweep_ms + sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
   }
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
@@ -690,9 +698,14 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   if (sweep) {
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
     const auto sweep_start = Clock::now();
-    sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
-    glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
-    t.march_ms += ms_since(sweep_start);
+    GpuTimer sweep_timer;
+    {
+      ScopedGpuTimer timing(sweep_timer);
+      sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
+    }
+    t.march_ms += sweep_timer.elapsed_ms();
+    glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute
+    t.sweep_ms = ms_since(sweep_start);
     far.bind_sampler(kFar);
   } else if (one_dx && !k.march_one_dx) {
     GlslDefines d = k.march_defines;

@@ -48,13 +48,14 @@ bool gpu_supports(shading::Product product, const shading::ProductOptions& optio
 
 struct GpuPipelineTimings {
   double pyramid_ms = 0.0;   // GPU pyramid build, wall clock to glFinish (0 without one)
-  double sun_ms = 0.0;       // GPU timer: the sun shadow pass (lit products, shadow)
+  double sun_ms = 0.0;       // GPU timer: the sun shadow pass and its sweep (lit products, shadow)
   double upload_ms = 0.0;    // the height field to the GPU (wall clock)
   // Bytes sent to the GPU by this compute(): heights, valid mask, row spacing (only the
   // edited rows of a resident field, gpu/resident_field.h), and the step schedules and
   // pyramid tables where they changed.
   std::size_t uploaded_bytes = 0;
-  double march_ms = 0.0;     // GPU timer (Mesa llvmpipe reports ~0 for compute)
+  double sweep_ms = 0.0;     // the sweep's far field, wall clock to glFinish (0 without it)
+  double march_ms = 0.0;     // GPU timer, the sweep included (Mesa llvmpipe reports ~0 for compute)
   double products_ms = 0.0;  // GPU timer
   double wall_ms = 0.0;      // whole compute(), read-back included
 };

@@ -117,7 +117,7 @@ TEST(CliShade, TimingsNameEveryStage) {
   ASSERT_EQ(g.status, 0) << g.out;
   EXPECT_NE(g.out.find("time write output"), std::string::npos) << g.out;
   if (g.out.find("compute (all GPU stages)") != std::string::npos) {
-    for (const char* stage : {"time OpenGL context", "time compile kernels", "time pyramid build"})
+    for (const char* stage : {"time OpenGL context", "time compile kernels", "time pyramid build", "time horizon sweep"})
       EXPECT_NE(g.out.find(stage), std::string::npos) << stage << "\n" << g.out;
   }
 }

@@ -359,10 +359,13 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
   result.max_height = hi;
 
   make_north_up(f);
-  switch (options.fill) {
-    case VoidFill::Laplace: fill_laplace(f.heights, f.valid, f.width, f.height); break;
-    case VoidFill::Nearest: fill_nearest(f.heights, f.valid, f.width, f.height); break;
-    case VoidFill::Minimum: fill_constant(f.heights, f.valid, static_cast<float>(lo)); break;
+  // Voids only (most DEMs have none: no fill's copies and queues of the whole grid).
+  if (result.nodata_count > 0) {
+    switch (options.fill) {
+      case VoidFill::Laplace: fill_laplace(f.heights, f.valid, f.width, f.height); break;
+      case VoidFill::Nearest: fill_nearest(f.heights, f.valid, f.width, f.height); break;
+      case VoidFill::Minimum: fill_constant(f.heights, f.valid, static_cast<float>(lo)); break;
+    }
   }
   // Outputs need a nodata value wherever the input had voids.
   f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);

@@ -95,8 +95,6 @@ void fill_laplace(std::span<float> heights, std::span<const std::uint8_t> valid,
   if (width < 1 || height < 1 || heights.size() != static_cast<std::size_t>(width) * height ||
       valid.size() != heights.size())
     throw std::invalid_argument("fill_laplace: grid size mismatch");
-  // Nothing to fill (most DEMs): skip the double copy of the grid.
-  if (std::all_of(valid.begin(), valid.end(), [](auto v) { return v != 0; })) return;
   Grid g;
   g.w = width;
   g.h = height;

@@ -541,7 +541,7 @@ GpuProductPipeline::~GpuProductPipeline() = default;
 
 std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
   const Impl& k = *mImpl;
-  if (k.sweep_textures.far_size[0] == 0 || !k.last_compute_swept) return {};
+  if (!k.last_compute_swept) return {};
   return k.sweep_textures.far.download();
 }
 
@@ -761,10 +761,12 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       march->set_uniform("march_pass", 1);
     }
     if (march) {
-      ScopedGpuTimer timing(march_timer);
-      march->dispatch_covering(w, rows, bands);
+      {
+        ScopedGpuTimer timing(march_timer);
+        march->dispatch_covering(w, rows, bands);
+      }
+      t.march_ms += march_timer.elapsed_ms();
     }
-    if (march) t.march_ms += march_timer.elapsed_ms();
     {
       ScopedGpuTimer timing(products_timer);
       products.dispatch_covering(w, rows);

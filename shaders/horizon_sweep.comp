@@ -83,18 +83,16 @@ void observe(int n, float jb) {
   float fn = float(n);
   float z0 = heightAt(texel.x, texel.y) - fn * drop * fn;
   if (top < 0) return;  // no far sample: the cleared code, none
-  {
-    int v = top;
-    vec2 vk = top_v;
-    while (v > 0) {
-      vec2 vf = hullAt(v - 1, lane);
-      if ((vf.y - z0) * (vk.x - fn) < (vk.y - z0) * (vf.x - fn)) break;
-      vk = vf;
-      --v;
-    }
-    float slope = (vk.y - z0) / (vk.x - fn);
-    imageStore(far_image, ivec3(texel, band), uvec4(encodeFarSlope((slope + 2.0 * fn * drop) / step_m)));
+  int v = top;
+  vec2 vk = top_v;
+  while (v > 0) {
+    vec2 vf = hullAt(v - 1, lane);
+    if ((vf.y - z0) * (vk.x - fn) < (vk.y - z0) * (vf.x - fn)) break;
+    vk = vf;
+    --v;
   }
+  float slope = (vk.y - z0) / (vk.x - fn);
+  imageStore(far_image, ivec3(texel, band), uvec4(encodeFarSlope((slope + 2.0 * fn * drop) / step_m)));
 }
 
 void main() {

@@ -1,9 +1,9 @@
-// Where `skylit bench` gets its frame times. The reference backend is timed with a
-// host clock around compute_product; the gpu backend keeps one headless GL context
-// and one compiled gpu::GpuProductPipeline per product and setting for the whole
-// run, and times a frame with its GL_TIME_ELAPSED queries (GpuPipelineTimings):
-// sun + march + products, i.e. the GPU work of the product, without context
-// creation, compilation, upload or read-back.
+// Where `skylit bench` gets its frame times: a renderer (shading/renderer.h) of the
+// backend, "auto" resolved once for the run, whose horizons are dropped before every
+// frame so that each timed frame is a whole one. The reference is timed with a host
+// clock around the frame; the gpu backend with its GL_TIME_ELAPSED queries
+// (FrameTimings): sun + march + products, i.e. the GPU work of the product, without
+// context creation, compilation, upload or read-back.
 #pragma once
 
 #include "shading/products.h"
@@ -57,9 +57,5 @@ std::unique_ptr<TimingSource> make_timing_source(const std::string& backend, con
 // True when the GPU timer reads ≈ 0 while compute() takes measurable wall time: Mesa
 // llvmpipe runs compute dispatches on the CPU outside its GL_TIME_ELAPSED window.
 bool gpu_timer_missing(const std::vector<FrameTime>& runs);
-
-// Whether two settings' options give the same compiled GPU pipeline (the fields the
-// bench varies): the GPU source reuses a pipeline only then.
-bool same_pipeline_options(const shading::ProductOptions& a, const shading::ProductOptions& b);
 
 }  // namespace skylit::app

@@ -2,7 +2,7 @@
 // measures its error against the brute-force ground truth; prints a table, writes a
 // CSV and an SVG of error against time with the Pareto front (the basis of the
 // --quality presets, docs/quality-presets.md).
-#include "app/backend.h"
+#include "gpu/renderer_factory.h"
 #include "app/bench_output.h"
 #include "app/bench_run.h"
 #include "app/commands.h"
@@ -23,7 +23,7 @@ struct BenchArgs {
   std::string dem;
   std::vector<int> sizes = {512, 1024, 2048, 4096};
   std::uint64_t seed = 1;
-  std::string backend = default_backend();
+  std::string backend = gpu::backend_names().front();
   std::string sweep = "default";
   std::string clock = clock_names().front();
   std::string csv, plot;

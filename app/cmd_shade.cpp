@@ -2,10 +2,10 @@
 // (or the built-in synthetic scene), computes one product, and writes it
 // georeferenced — atomically, so a failed run leaves no file. Lighting (time, place,
 // sky, sun) is resolved before any computation, so its errors cost nothing.
-#include "app/backend.h"
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/shade_output.h"
+#include "gpu/renderer_factory.h"
 #include "gpu/timer.h"
 
 #include "shading/horizon_sweep.h"
@@ -49,7 +49,7 @@ struct ShadeArgs {
   std::string horizons{shading::horizon_method_name(shading::MarchOptions{}.method)};
   bool horizons_given = false;  // --horizons on the command line (the fallback note is for it)
   bool no_curvature = false;
-  std::string backend = default_backend();
+  std::string backend = gpu::backend_names().front();
   unsigned threads = 0;
   bool quiet = false;
   bool overwrite = false;
@@ -74,28 +74,48 @@ std::optional<sun::Observer> dem_place(const terrain::HeightField& f) {
 }
 
 // `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
-// from the pipeline (gpu/gpu_pipeline.h GpuPipelineTimings says which clock each uses).
-void print_timings(double read_ms, const BackendReport& r, double write_ms) {
+// from the renderer (shading/renderer.h FrameTimings says which clock each uses).
+void print_timings(double read_ms, const shading::Renderer& renderer, double write_ms) {
+  const shading::FrameTimings& t = renderer.last_timings();
   auto line = [](const char* stage, double ms) { std::fprintf(stderr, "skylit: time %-28s %9.1f ms\n", stage, ms); };
   line("read DEM", read_ms);
-  if (r.on_gpu) {
-    line("OpenGL context", r.context_ms);
-    line("compile kernels", r.compile_ms);
-    line("upload heights", r.gpu.upload_ms);
-    line("pyramid build", r.gpu.pyramid_ms);
-    line("horizon sweep", r.gpu.sweep_ms);
+  if (renderer.on_gpu()) {
+    line("OpenGL context", t.context_ms);
+    line("compile kernels", t.compile_ms);
+    line("upload heights", t.upload_ms);
+    line("pyramid build", t.pyramid_ms);
+    line("horizon sweep", t.sweep_ms);
     // Mesa llvmpipe runs compute outside its timer queries (they read ≈ 0): then only the
     // stages' sum is known, inside "compute".
-    if (r.gpu.sun_ms + r.gpu.march_ms + r.gpu.products_ms > 1e-3 * r.compute_ms) {
-      line("sun shadow (GPU timer)", r.gpu.sun_ms);
-      line("march (GPU timer)", r.gpu.march_ms);
-      line("surface products (GPU timer)", r.gpu.products_ms);
+    if (t.sun_ms + t.march_ms + t.products_ms > 1e-3 * t.frame_ms) {
+      line("sun shadow (GPU timer)", t.sun_ms);
+      line("march (GPU timer)", t.march_ms);
+      line("surface products (GPU timer)", t.products_ms);
     } else {
       std::fprintf(stderr, "skylit: time %-28s %12s\n", "sun, march, products", "(no GPU timer on this driver)");
     }
   }
-  line(r.on_gpu ? "compute (all GPU stages)" : "compute (CPU reference)", r.compute_ms);
+  line(renderer.on_gpu() ? "compute (all GPU stages)" : "compute (CPU reference)",
+       t.frame_ms - t.compile_ms);
   line("write output", write_ms);
+}
+
+// --backend's value, checked before any work.
+gpu::Backend parse_backend_arg(const std::string& name) {
+  if (const auto backend = gpu::parse_backend(name)) return *backend;
+  std::string known;
+  for (const auto& b : gpu::backend_names()) known += (known.empty() ? "" : ", ") + b;
+  throw std::invalid_argument("--backend '" + name + "' is not available; this build has: " + known);
+}
+
+std::unique_ptr<shading::Renderer> make_shade_renderer(gpu::Backend backend, bool quiet) {
+  try {
+    return gpu::make_renderer(backend, [quiet](const std::string& note) {
+      if (!quiet) std::cerr << "skylit: note: " << note << "\n";
+    });
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("--backend " + std::string(gpu::backend_name(backend)) + ": " + e.what());
+  }
 }
 
 terrain::HeightField load_input(const ShadeArgs& a) {
@@ -144,6 +164,7 @@ int run_shade(const ShadeArgs& a) {
   const auto product = shading::parse_product(a.product);
   if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() + ")");
   OutputSpec out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
+  const gpu::Backend backend = parse_backend_arg(a.backend);
   const bool lit = *product == shading::Product::Shadow || *product == shading::Product::Irradiance ||
                    (*product == shading::Product::Shaded && !sky_only_default(a));
   shading::LightingRequest request = a.lighting;
@@ -166,14 +187,19 @@ int run_shade(const ShadeArgs& a) {
     if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
   }
 
+  const auto renderer = make_shade_renderer(backend, a.quiet);
+  if (const auto why = renderer->lacks(*product, opt))
+    throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
+                                "; use --backend reference (or auto)");
+  renderer->set_field(field);
+  renderer->set_options(opt);
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  BackendReport report;
-  const auto bands = compute_with_backend(a.backend, field, *product, opt, [&](double f) { bar.update(f); }, &report);
+  const auto bands = renderer->frame(*product, {opt.lighting, {}, std::nullopt}, [&](double f) { bar.update(f); });
   bar.finish();
-  if (!a.quiet) std::cerr << "skylit: computed on " << report.used << "\n";
+  if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
   const auto write_start = std::chrono::steady_clock::now();
   write_product(out, field, bands);
-  if (a.timings) print_timings(read_ms, report, gpu::ms_since(write_start));
+  if (a.timings) print_timings(read_ms, *renderer, gpu::ms_since(write_start));
   if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
                           << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";
   return 0;

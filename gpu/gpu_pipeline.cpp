@@ -59,6 +59,7 @@ enum Binding : int {
   kSunSchedule = 13,
   kCoarseSigma = 14,
   kGamma = 15,
+  kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
 };
 
 // Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
@@ -289,7 +290,39 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
   return ms;
 }
 
+// The sun of sun_shadow.comp as uniforms (the kernel's source, hence the driver's
+// compiled-kernel cache entry, is the same for every sun position), and its heading.
+std::vector<std::pair<std::string, double>> sun_uniforms(const glm::dvec3& s, shading::Heading& heading) {
+  const double azimuth = sky::azimuth_of(s), elevation = sky::elevation_of(s);
+  const double disc_radius = shading::SunShadowOptions{}.radius;
+  heading = shading::heading_from_geographic(azimuth);
+  std::vector<std::pair<std::string, double>> uniforms = {{"sun_east", heading.east},
+                                                          {"sun_north", heading.north},
+                                                          {"sun_elevation", elevation},
+                                                          {"sun_sin_az", std::sin(azimuth)},
+                                                          {"sun_cos_az", std::cos(azimuth)},
+                                                          {"sun_sin_el", std::sin(elevation)},
+                                                          {"sun_cos_el", std::cos(elevation)}};
+  // sun_shadow.comp's early exit (the march): the slopes of the disc frame's edges
+  // y = ±2 (its clip square), widened by 1e-4 relative so float rounding never exits early.
+  const double top = elevation + 2.0 * disc_radius, bottom = elevation - 2.0 * disc_radius;
+  const double inf = std::numeric_limits<float>::infinity(), near_vertical = std::numbers::pi / 2 - 1e-3;
+  uniforms.emplace_back("hidden_slope", top < near_vertical ? std::tan(top) * (1.0 + 1e-4) + 1e-4 : inf);
+  uniforms.emplace_back("open_slope",
+                        bottom > -near_vertical ? std::tan(bottom) - 1e-4 * std::abs(std::tan(bottom)) - 1e-4 : -inf);
+  return uniforms;
+}
+
 }  // namespace
+
+bool same_baked_lighting(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b) {
+  const bool lit = shading::uses_lighting(product, a);
+  if (lit != shading::uses_lighting(product, b)) return false;
+  if (!lit) return true;
+  if (!a.lighting || !b.lighting) return a.lighting.has_value() == b.lighting.has_value();
+  return sun_lit(product, a) == sun_lit(product, b) && (product != Product::Shaded || a.lighting->colour == b.lighting->colour) &&
+         (a.lighting->sky != nullptr) == (b.lighting->sky != nullptr);
+}
 
 bool gpu_supports(Product product, const shading::ProductOptions& options) {
   const bool known = product == Product::Horizon || product == Product::Svf || product == Product::Skyview ||
@@ -313,15 +346,23 @@ struct GpuProductPipeline::Impl {
   SweepTextures sweep_textures;  // the sweep's (shading/horizon_sweep.h)
   bool last_compute_swept = false;  // far_codes() holds the last compute()'s
   std::vector<shading::Heading> band_headings;
-  // surface_products.comp on the march's sigma buffer, and [1] on the sweep's far slopes
-  // (SWEPT: near steps in the kernel). Compiled at first use.
-  std::optional<ComputeProgram> products[2];
+  // surface_products.comp [cache][swept]: on the march's sigma buffer, or [.][1] on the
+  // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE).
+  // Compiled at first use.
+  enum VisCache { kNoCache = 0, kKeepVis = 1, kReadVis = 2 };
+  std::optional<ComputeProgram> products[3][2];
   GlslDefines products_defines;
   std::optional<glm::vec3> products_sun_dir;  // lit: the sun's direction (unit, toward it)
-  const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept) {
-    if (!products[swept]) {
+  void set_products_sun(const ComputeProgram& p) const {
+    if (!products_sun_dir || !p.has_uniform("sun_dir")) return;  // absent when the sun is off (SUN_LIT 0)
+    p.set_uniform("sun_dir", products_sun_dir->x, products_sun_dir->y, products_sun_dir->z);
+    for (int c = 0; c < channels; ++c) p.set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(sun_dni[c]));
+  }
+  const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept, VisCache cache = kNoCache) {
+    if (cache == kReadVis) swept = false;  // no horizons read
+    if (!products[cache][swept]) {
       GlslDefines d = products_defines;
-      d.set("SWEPT", swept ? 1 : 0);
+      d.set("SWEPT", swept ? 1 : 0).set("VIS_CACHE", cache).set("VIS_BINDING", kVis);
       if (swept) {
         d.set("RAY_TEXTURES", 1)
             .set("ONE_DX", 1)  // the sweep's fields have one row spacing
@@ -329,16 +370,21 @@ struct GpuProductPipeline::Impl {
             .set("FAR_BINDING", kFar);
         add_far_code_defines(d);
       }
-      products[swept].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
-      const ComputeProgram& p = *products[swept];
-      if (products_sun_dir && p.has_uniform("sun_dir")) {  // absent when the sun is off (SUN_LIT 0)
-        p.set_uniform("sun_dir", products_sun_dir->x, products_sun_dir->y, products_sun_dir->z);
-        for (int c = 0; c < channels; ++c)
-          p.set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(sun_dni[c]));
-      }
+      const auto compile_start = Clock::now();
+      products[cache][swept].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
+      compile_ms += ms_since(compile_start);
+      set_products_sun(*products[cache][swept]);
     }
-    return *products[swept];
+    return *products[cache][swept];
   }
+  // The kept visibility: SH_COEFFS floats per texel, coefficient-major, for the field
+  // revision it was computed from (vis_valid).
+  Buffer vis;
+  bool keep_vis = false, vis_valid = false;
+  std::uint64_t vis_field_id = 0, vis_revision = 0;
+  int vis_rows = 0;
+  int frames = 0;  // compute() calls since the visibility was last dropped
+  double compile_ms = 0.0;  // kernels compiled since the last compute() began
   // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
   // (SUN_SWEPT). Compiled at first use.
   std::optional<ComputeProgram> sun[2];
@@ -349,11 +395,16 @@ struct GpuProductPipeline::Impl {
     if (!sun[swept]) {
       GlslDefines d = sun_defines;
       d.set("SUN_SWEPT", swept ? 1 : 0);
+      const auto compile_start = Clock::now();
       sun[swept].emplace(ComputeProgram::from_embedded("sun_shadow.comp", d));
-      for (const auto& [name, value] : sun_uniforms)
-        if (sun[swept]->has_uniform(name)) sun[swept]->set_uniform(name, static_cast<float>(value));
+      compile_ms += ms_since(compile_start);
+      set_sun(*sun[swept]);
     }
     return *sun[swept];
+  }
+  void set_sun(const ComputeProgram& p) const {
+    for (const auto& [name, value] : sun_uniforms)
+      if (p.has_uniform(name)) p.set_uniform(name, static_cast<float>(value));
   }
   // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
   // steps and lines), compiled at first use.
@@ -369,7 +420,9 @@ struct GpuProductPipeline::Impl {
           .set("HULL_IMAGE_UNIT", kHullImageUnit)
           .set("FAR_IMAGE_UNIT", kFarImageUnit);
       add_far_code_defines(d);
+      const auto compile_start = Clock::now();
       sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
+      compile_ms += ms_since(compile_start);
     }
     return *sweeps[sun];
   }
@@ -411,9 +464,6 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   const bool lit = shading::uses_lighting(product, options);
   if (sun_lit(product, options) || product == Product::Shadow) {
     // Sun shadow kernel: the sun's angles as compute_product takes them from the lighting.
-    const glm::dvec3& s = options.lighting->sun.direction;
-    const double azimuth = sky::azimuth_of(s), elevation = sky::elevation_of(s);
-    const shading::Heading u = shading::heading_from_geographic(azimuth);
     const double disc_radius = shading::SunShadowOptions{}.radius;
     GlslDefines sun;
     sun.set("LOCAL_SIZE_X", kLocalSize)
@@ -431,24 +481,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("FAR_BINDING", kFar);
     add_far_code_defines(sun);
     k.sun_defines = sun;
-    k.sun_heading = u;
-    // The sun as uniforms: the kernel's source, hence the driver's compiled-kernel
-    // cache entry, is the same for every sun position.
-    auto& uniforms = k.sun_uniforms;
-    uniforms = {{"sun_east", u.east},
-                {"sun_north", u.north},
-                {"sun_elevation", elevation},
-                {"sun_sin_az", std::sin(azimuth)},
-                {"sun_cos_az", std::cos(azimuth)},
-                {"sun_sin_el", std::sin(elevation)},
-                {"sun_cos_el", std::cos(elevation)}};
-    // sun_shadow.comp's early exit (the march): the slopes of the disc frame's edges
-    // y = ±2 (its clip square), widened by 1e-4 relative so float rounding never exits early.
-    const double top = elevation + 2.0 * disc_radius, bottom = elevation - 2.0 * disc_radius;
-    const double inf = std::numeric_limits<float>::infinity(), near_vertical = std::numbers::pi / 2 - 1e-3;
-    uniforms.emplace_back("hidden_slope", top < near_vertical ? std::tan(top) * (1.0 + 1e-4) + 1e-4 : inf);
-    uniforms.emplace_back("open_slope",
-                          bottom > -near_vertical ? std::tan(bottom) - 1e-4 * std::abs(std::tan(bottom)) - 1e-4 : -inf);
+    k.sun_uniforms = sun_uniforms(options.lighting->sun.direction, k.sun_heading);
     k.sun_kernel(false);  // the march's variant now; the sweep's at its first field
   }
   if (product == Product::Shadow) return;  // the sun kernel alone
@@ -525,6 +558,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set_literal("NLP_OCCLUSION_FACTORS", glsl_float_array_literal(occlusion_factors))
         // Constants, not a buffer: the compiler folds G's zeros and needs no gathers.
         .set_literal("WEDGE_FOURIER", glsl_float_array_literal(wedge_fourier_matrix(op)));
+    k.vis_rows = op.rows();
     k.table = Buffer::from(std::span<const float>(shading.sky));
     k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
     if (s.mode == shading::ShadingMode::SkyBrdfTable) k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
@@ -539,6 +573,54 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
 
 GpuProductPipeline::~GpuProductPipeline() = default;
 
+void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
+  shading::ProductOptions next = mOptions;
+  next.lighting = lighting;
+  if (!shading::uses_lighting(mProduct, mOptions) || !same_baked_lighting(mProduct, mOptions, next))
+    throw std::logic_error("GpuProductPipeline::set_lighting: the lighting differs in what the kernels bake in");
+  shading::validate(lighting);
+  mOptions = std::move(next);
+  Impl& k = *mImpl;
+  if (k.sun[0] || k.sun[1]) {
+    k.sun_uniforms = sun_uniforms(lighting.sun.direction, k.sun_heading);
+    for (const auto& p : k.sun)
+      if (p) k.set_sun(*p);
+  }
+  if (!needs_visibility(mProduct)) return;
+  GlslDefines unused;  // the kernels' defines are the same (same_baked_lighting)
+  const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGamma, unused);
+  k.sun_dni = shading.sun_dni;
+  if (k.table.size_bytes() == shading.sky.size() * sizeof(float)) {
+    k.table.upload(shading.sky.data(), k.table.size_bytes());
+  } else {
+    k.table_tex = BufferTexture();
+    k.table = Buffer::from(std::span<const float>(shading.sky));
+    if (mOptions.shaded.mode == shading::ShadingMode::SkyBrdfTable)
+      k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
+  }
+  k.display_per_irradiance = shading::shaded_display_scale(mOptions.shaded, lighting);
+  k.products_sun_dir = glm::vec3(lighting.sun.direction);
+  for (const auto& row : k.products)
+    for (const auto& p : row)
+      if (p) k.set_products_sun(*p);
+}
+
+void GpuProductPipeline::set_exposure(double exposure) {
+  if (!(exposure > 0.0)) throw std::invalid_argument("shaded: exposure must be > 0");
+  mOptions.shaded.exposure = exposure;
+  if (shading::uses_lighting(mProduct, mOptions))
+    mImpl->display_per_irradiance = shading::shaded_display_scale(mOptions.shaded, *mOptions.lighting);
+}
+
+void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
+
+void GpuProductPipeline::drop_visibility() {
+  Impl& k = *mImpl;
+  k.vis = Buffer();
+  k.vis_valid = false;
+  k.frames = 0;
+}
+
 std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
   const Impl& k = *mImpl;
   if (!k.last_compute_swept) return {};
@@ -552,6 +634,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   const auto start = Clock::now();
   GpuPipelineTimings t;
   Impl& k = *mImpl;  // compute() keeps the field resident in it (single-threaded, as GL is)
+  k.compile_ms = 0.0;
 
   const int w = field.width, h = field.height, bands = k.azimuths;
   const int out_bands = mProduct == Product::Horizon ? bands : needs_visibility(mProduct) ? k.channels : 1;
@@ -570,7 +653,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     shadow.download(out.data.data(), texels * sizeof(float));
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
     if (progress) progress(1.0);
-    t.wall_ms = ms_since(start);
+    t.compile_ms = k.compile_ms;
+    t.frame_ms = ms_since(start);
     if (timings) *timings = t;
     return out;
   }
@@ -580,14 +664,34 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   t.uploaded_bytes = k.field.sync(field);
   t.upload_ms = ms_since(upload_start);
 
+  // The visibility an earlier compute() kept for this field revision (stages 1–2 and the
+  // visibility are skipped), or (keeping) this one's, for the computes after it.
+  const bool vis_product = needs_visibility(mProduct);
+  const bool reuse = vis_product && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
+  bool keep = vis_product && !reuse && (k.keep_vis || k.frames > 0);
+  if (keep) {
+    const std::size_t vis_bytes = texels * static_cast<std::size_t>(k.vis_rows) * sizeof(float);
+    k.vis_valid = false;
+    try {
+      check_storage_size(vis_bytes, "GPU pipeline: the kept visibility");
+      if (k.vis.size_bytes() != vis_bytes) {
+        k.vis = Buffer();
+        k.vis = Buffer(vis_bytes);
+      }
+    } catch (const std::runtime_error&) {
+      keep = false;  // over one storage buffer: every compute() does all its work
+    }
+  }
+  t.horizons_reused = reuse;
+
   // Stage 1: the marcher's step schedule (C++) and the height pyramid, built on the GPU
   // from the resident heights (rebuilt whole on every call; its tables stay resident).
   int steps_count = 0;
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
-  const bool sweep = shading::uses_sweep(field, mOptions);  // as the reference decides
-  k.last_compute_swept = sweep;
-  if (!mOptions.exact && !sweep) {
+  const bool sweep = !reuse && shading::uses_sweep(field, mOptions);  // as the reference decides
+  if (!reuse) k.last_compute_swept = sweep;
+  if (!reuse && !mOptions.exact && !sweep) {
     const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
     steps_count = static_cast<int>(steps.distances.size());
     if (steps_count > kMaxMarchSteps)
@@ -645,7 +749,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     }
   const std::size_t coarse_bytes = static_cast<std::size_t>(coarse_chunk_rows) * coarse_x.count() * bands * sizeof(float);
   // The march's horizons of a chunk (the sweep's are computed in the product kernel).
-  const std::size_t sigma_bytes = sweep ? sizeof(float) : static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
+  const std::size_t sigma_bytes = sweep || reuse ? sizeof(float) : static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
   check_storage_size(sigma_bytes, "GPU pipeline: one row of horizon bands");
   Buffer sigma(sigma_bytes);
   Buffer coarse_sigma;
@@ -694,7 +798,10 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   // adds each texel's near steps). Stage 3: the product. Row chunks bound a dispatch's
   // length.
   const bool one_dx = !mOptions.exact && shading::one_row_spacing(field);
-  const ComputeProgram& products = k.products_kernel(mOptions, sweep);
+  const ComputeProgram& products =
+      k.products_kernel(mOptions, sweep, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
+  if (keep) k.products_kernel(mOptions, false, Impl::kReadVis);  // compiled now: later frames only read
+  if (reuse || keep) k.vis.bind_storage(kVis);
   if (sweep) {
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
     const auto sweep_start = Clock::now();
@@ -707,12 +814,12 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute
     t.sweep_ms = ms_since(sweep_start);
     far.bind_sampler(kFar);
-  } else if (one_dx && !k.march_one_dx) {
+  } else if (!reuse && one_dx && !k.march_one_dx) {
     GlslDefines d = k.march_defines;
     d.set("ONE_DX", 1);
     k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
   }
-  const ComputeProgram* march = sweep ? nullptr : one_dx ? &*k.march_one_dx : &*k.march;
+  const ComputeProgram* march = sweep || reuse ? nullptr : one_dx ? &*k.march_one_dx : &*k.march;
   if (march) {
     set_grid_uniforms(*march, field);
     if (one_dx) march->set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
@@ -723,7 +830,8 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   if (products.has_uniform("first_distance")) products.set_uniform("first_distance", static_cast<float>(first_distance));
   if (products.has_uniform("half_texel_floor")) products.set_uniform("half_texel_floor", sweep ? 1 : 0);
 
-  if (mOptions.exact) {
+  if (!march) {
+  } else if (mOptions.exact) {
     // The CPU stops at t > D·(1 + 1e−12); float t carries ~1e−7 relative error, so the
     // slack is widened to keep the sample at t = D that the CPU keeps.
     const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
@@ -733,7 +841,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     march->set_uniform("steps", steps_count);
     march->set_uniform("z_bound", z_bound);
   }
-  if (s > 1) {
+  if (s > 1 && march) {
     march->set_uniform("coarse_width", coarse_x.count());
     march->set_uniform("coarse_chunk_rows", coarse_chunk_rows);
   }
@@ -748,7 +856,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       p->set_uniform("row_offset", r0);
       p->set_uniform("chunk_rows", chunk);
     }
-    if (s > 1) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
+    if (s > 1 && march) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
       const auto [c0, c1] = coarse_span(r0, rows);
       march->set_uniform("coarse_row_offset", c0);
       march->set_uniform("coarse_rows", c1 - c0 + 1);
@@ -797,8 +905,15 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::srgb_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure);
   }
+  if (keep) {
+    k.vis_valid = true;
+    k.vis_field_id = field.id.value();
+    k.vis_revision = field.revision;
+  }
+  if (vis_product) ++k.frames;
   if (progress) progress(1.0);
-  t.wall_ms = ms_since(start);
+  t.compile_ms = k.compile_ms;
+  t.frame_ms = ms_since(start);
   if (timings) *timings = t;
   return out;
 }

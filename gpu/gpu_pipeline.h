@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "shading/products.h"
+#include "shading/renderer.h"
 #include "terrain/height_field.h"
 
 namespace skylit::gpu {
@@ -46,19 +47,12 @@ namespace skylit::gpu {
 // shading mode (ShadedOptions::mode, the default).
 bool gpu_supports(shading::Product product, const shading::ProductOptions& options);
 
-struct GpuPipelineTimings {
-  double pyramid_ms = 0.0;   // GPU pyramid build, wall clock to glFinish (0 without one)
-  double sun_ms = 0.0;       // GPU timer: the sun shadow pass and its sweep (lit products, shadow)
-  double upload_ms = 0.0;    // the height field to the GPU (wall clock)
-  // Bytes sent to the GPU by this compute(): heights, valid mask, row spacing (only the
-  // edited rows of a resident field, gpu/resident_field.h), and the step schedules and
-  // pyramid tables where they changed.
-  std::size_t uploaded_bytes = 0;
-  double sweep_ms = 0.0;     // the sweep's far field, wall clock to glFinish (0 without it)
-  double march_ms = 0.0;     // GPU timer, the sweep included (Mesa llvmpipe reports ~0 for compute)
-  double products_ms = 0.0;  // GPU timer
-  double wall_ms = 0.0;      // whole compute(), read-back included
-};
+// Where compute()'s time went (shading/renderer.h says which clock each field uses).
+using GpuPipelineTimings = shading::FrameTimings;
+
+// Whether two option sets bake the same lighting into a pipeline's kernels (lit or not,
+// the sun on or off, colour, a sky or none): set_lighting() takes only such a change.
+bool same_baked_lighting(shading::Product product, const shading::ProductOptions& a, const shading::ProductOptions& b);
 
 // Compiles the kernels for one product and set of options; compute() may then run on
 // any number of fields. Needs a current GL 4.5 context (gpu/gl_context.h) for its whole
@@ -79,6 +73,18 @@ class GpuProductPipeline {
   // and the σ and output buffers (16 MiB each at the default), however large the field.
   void set_invocations_per_dispatch(std::size_t n) { mInvocationsPerDispatch = n; }
   const shading::ProductOptions& options() const { return mOptions; }
+
+  // Per-frame inputs: the sun and sky (uniforms and the sky tables; the lighting must
+  // match the constructor's in what same_baked_lighting compares, else std::logic_error),
+  // and the exposure of `shaded`.
+  void set_lighting(const shading::Lighting& lighting);
+  void set_exposure(double exposure);
+  // `shaded` and `irradiance`: keep the visibility (SH_COEFFS floats per texel) of a
+  // compute() for the next ones on the same field revision, which then skip the
+  // horizons and the visibility. Off: the second compute() starts keeping. A field too
+  // large for one storage buffer keeps nothing.
+  void keep_visibility(bool keep);
+  void drop_visibility();
 
   // The field stays resident on the GPU until the next call: the same HeightField
   // object after one edit (terrain/editing.h) re-uploads only the edited rows

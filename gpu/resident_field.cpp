@@ -28,6 +28,9 @@ std::size_t ResidentField::sync(const terrain::HeightField& field) {
   const bool edited = field.id.value() == mSourceId && field.width == mWidth && field.height == mHeight && field.dy == mDy &&
                       field.dx_per_row == mDx && field.revision == mRevision + 1 && !dirty.empty() &&
                       dirty.x0 >= 0 && dirty.y0 >= 0 && dirty.x1() <= field.width && dirty.y1() <= field.height;
+  const bool unchanged = field.id.value() == mSourceId && field.width == mWidth && field.height == mHeight &&
+                         field.dy == mDy && field.dx_per_row == mDx && field.revision == mRevision;
+  if (unchanged) return 0;  // every change goes through mark_dirty (terrain/height_field.h)
   if (!edited) return upload_whole(field);
   // Rows y0 … y1 − 1: contiguous in the heights, and in the valid words that hold them.
   const std::size_t w = static_cast<std::size_t>(field.width);

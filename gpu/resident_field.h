@@ -6,8 +6,8 @@
 // address), of the same size and spacing, whose revision is exactly one past the
 // resident copy's (one mark_dirty() since, terrain/height_field.h) with its last_dirty
 // rectangle inside the grid. Then rows last_dirty.y0 … y1 − 1 of the heights and the
-// valid-mask words holding them are uploaded; anything else (another field, several
-// edits since) is uploaded whole.
+// valid-mask words holding them are uploaded; the same object at the same revision
+// uploads nothing; anything else (another field, several edits since) is uploaded whole.
 #pragma once
 
 #include <cstddef>

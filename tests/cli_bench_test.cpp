@@ -10,6 +10,7 @@
 #include "app/svg_plot.h"
 #include "gpu/gl_context.h"
 #include "shading/quality.h"
+#include "shading/renderer.h"
 
 #include <gtest/gtest.h>
 
@@ -322,14 +323,15 @@ TEST(QualityPresets, ParseApplyAndOrder) {
   EXPECT_LT(march_cost(Quality::Default), march_cost(Quality::High));
 }
 
-// Every knob a setting varies makes another pipeline: a cached one must not be reused
-// for a setting that differs in any of them (it once ignored the horizon method).
+// Every knob a setting varies changes the horizons the renderer keeps and the pipeline
+// it caches: a kept one must not serve a setting that differs in any of them (the
+// bench's cache once ignored the horizon method).
 TEST(BenchTiming, PipelinesDifferWhereSettingsDiffer) {
   using namespace skylit::app;
   const auto list = sweep_settings("default");
   for (std::size_t a = 0; a < list.size(); ++a)
     for (std::size_t b = 0; b < list.size(); ++b)
-      EXPECT_EQ(same_pipeline_options(options_for(list[a], 1), options_for(list[b], 1)), a == b)
+      EXPECT_EQ(skylit::shading::same_horizon_options(options_for(list[a], 1), options_for(list[b], 1)), a == b)
           << list[a].label() << " vs " << list[b].label();
 }
 

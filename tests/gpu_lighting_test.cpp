@@ -136,7 +136,7 @@ ProductBands expect_lit_matches(const GpuProductPipeline& pipeline, const Height
             << ": max |d| " << s.max_abs;
   if (product == Product::Irradiance) std::cout << ", max rel " << s.max_rel;
   std::cout << ", within tol " << 100.0 * s.fraction() << "% of " << s.compared << "; GPU build " << build_ms
-            << " ms, compute " << timings.wall_ms << " ms (sun pass " << timings.sun_ms << " ms GPU), CPU " << cpu_ms
+            << " ms, compute " << timings.frame_ms << " ms (sun pass " << timings.sun_ms << " ms GPU), CPU " << cpu_ms
             << " ms\n";
   EXPECT_EQ(s.nan_mismatches, 0);
   EXPECT_EQ(s.gpu_nans_on_valid, 0);

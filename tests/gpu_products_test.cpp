@@ -111,7 +111,7 @@ ProductBands expect_product_matches(const GpuProductPipeline& pipeline, const He
   std::cout << "[ " << label << " ] " << shading::product_name(product) << " " << field.width << "x" << field.height
             << " W=" << (product == Product::Horizon ? options.march.azimuths : options.exact ? options.exact_options.sky_azimuths : options.march.azimuths)
             << (options.exact ? " exact" : "") << ": max |d| " << s.max_abs << ", within " << tol << ": "
-            << 100.0 * s.within << "% of " << s.compared << "; GPU wall " << timings.wall_ms << " ms (pyramid "
+            << 100.0 * s.within << "% of " << s.compared << "; GPU wall " << timings.frame_ms << " ms (pyramid "
             << timings.pyramid_ms << " ms), CPU " << cpu_ms << " ms\n";
   EXPECT_EQ(s.nan_mismatches, 0);
   EXPECT_GT(s.compared, 0u);

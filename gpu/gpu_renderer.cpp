@@ -1,0 +1,118 @@
+#include "gpu/gpu_renderer.h"
+
+#include "gpu/timer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace skylit::gpu {
+namespace {
+
+using shading::Product;
+
+// One line: EGL explains each platform's failure on its own lines.
+std::string one_line(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
+std::unique_ptr<HeadlessContext> make_context(double& ms) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    auto context = std::make_unique<HeadlessContext>();
+    ms = ms_since(start);
+    return context;
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(one_line(e.what()));
+  }
+}
+
+// Options that give the same compiled pipeline: the kernels bake in the horizon and
+// shading options and the lighting's shape; the albedo is applied on the host.
+bool same_pipeline(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b) {
+  return shading::same_horizon_options(a, b) && same_baked_lighting(product, a, b) && a.shaded.albedo == b.shaded.albedo;
+}
+
+}  // namespace
+
+GpuRenderer::GpuRenderer() : context_(make_context(context_ms_)) {}
+
+GpuRenderer::~GpuRenderer() {
+  context_->make_current();  // GL objects die while their context is current
+  cache_.clear();
+}
+
+std::string GpuRenderer::description() const {
+  return "gpu (" + context_->renderer() + ", " + context_->platform() + ")";
+}
+
+void GpuRenderer::set_options(const shading::ProductOptions& options) {
+  if (!shading::same_horizon_options(options, options_)) {
+    outputs_.clear();
+    frames_ = 0;
+  }
+  options_ = options;
+}
+
+void GpuRenderer::drop_horizons() {
+  context_->make_current();
+  for (Entry& e : cache_) e.pipeline->drop_visibility();
+  outputs_.clear();
+  frames_ = 0;
+}
+
+std::optional<std::string> GpuRenderer::lacks(Product product, const shading::ProductOptions& options) const {
+  if (gpu_supports(product, options)) return std::nullopt;
+  const std::string name(shading::product_name(product));
+  if (options.exact && shading::uses_lighting(product, options))
+    return "the GPU cannot compute '" + name + "' with the exact march (the sun's exact march is CPU-only)";
+  return "the GPU cannot compute '" + name + "' with these options";
+}
+
+GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::ProductOptions& options) {
+  const auto it = std::find_if(cache_.begin(), cache_.end(), [&](const Entry& e) {
+    return e.product == product && same_pipeline(product, e.options, options);
+  });
+  if (it != cache_.end()) return *it->pipeline;
+  if (cache_.size() == kCachedPipelines) cache_.pop_front();  // the oldest setting
+  const auto start = std::chrono::steady_clock::now();
+  cache_.push_back({product, options, std::make_unique<GpuProductPipeline>(product, options)});
+  timings_.compile_ms += ms_since(start);
+  return *cache_.back().pipeline;
+}
+
+shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameInputs& inputs,
+                                         const shading::ProgressCallback& progress) {
+  if (!field_) throw std::logic_error("GpuRenderer::frame: no field (set_field)");
+  shading::validate(inputs);
+  const shading::ProductOptions options = shading::frame_options(options_, inputs);
+  if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
+  const auto start = std::chrono::steady_clock::now();
+  timings_ = {};
+  shading::ProductBands out;
+  const bool independent = shading::FrameIndependentCache::applies(product);
+  if (const shading::ProductBands* kept = independent ? outputs_.find(product, *field_, options) : nullptr) {
+    out = *kept;
+    timings_.horizons_reused = true;
+    if (progress) progress(1.0);
+  } else {
+    context_->make_current();
+    GpuProductPipeline& pipeline = pipeline_for(product, options);  // its construction compiles
+    const double construction_ms = timings_.compile_ms;
+    last_ = &pipeline;
+    if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
+    pipeline.set_exposure(options.shaded.exposure);
+    pipeline.keep_visibility(keep_);
+    out = pipeline.compute(*field_, progress, &timings_);
+    timings_.compile_ms += construction_ms;
+    if (independent && (keep_ || frames_ > 0)) outputs_.store(product, *field_, options, out);
+  }
+  if (!context_reported_) timings_.context_ms = context_ms_;
+  context_reported_ = true;
+  ++frames_;
+  timings_.frame_ms = ms_since(start);
+  return out;
+}
+
+}  // namespace skylit::gpu

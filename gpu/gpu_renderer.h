@@ -1,0 +1,62 @@
+// The GPU renderer (shading/renderer.h): one headless OpenGL 4.5 context, the height
+// field resident on it, and compiled pipelines (gpu/gpu_pipeline.h) cached by what their
+// kernels bake in: the product, the horizon and shading options, and the lighting's
+// shape (lit, sun on, colour, a sky). A frame sets the sun, sky and exposure as uniforms
+// and tables; `shaded` and `irradiance` keep their visibility on the GPU between frames
+// (GpuProductPipeline::keep_visibility), horizon, svf and skyview their bands.
+#pragma once
+
+#include "gpu/gl_context.h"
+#include "gpu/gpu_pipeline.h"
+#include "shading/renderer.h"
+
+#include <deque>
+#include <memory>
+
+namespace skylit::gpu {
+
+class GpuRenderer final : public shading::Renderer {
+ public:
+  // Throws std::runtime_error ("no OpenGL 4.5 context could be created: …", one line).
+  GpuRenderer();
+  ~GpuRenderer() override;
+
+  std::string description() const override;
+  bool on_gpu() const override { return true; }
+  void set_field(const terrain::HeightField& field) override { field_ = &field; }
+  void set_options(const shading::ProductOptions& options) override;
+  void expect_frames(int frames) override { keep_ = frames > 1; }
+  void drop_horizons() override;
+  std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
+  shading::ProductBands frame(shading::Product product, const shading::FrameInputs& inputs,
+                              const shading::ProgressCallback& progress = {}) override;
+  const shading::FrameTimings& last_timings() const override { return timings_; }
+
+  const HeadlessContext& context() const { return *context_; }
+  // The pipeline of the last frame (diagnostics: GpuProductPipeline::far_codes), or null.
+  const GpuProductPipeline* last_pipeline() const { return last_; }
+
+ private:
+  struct Entry {
+    shading::Product product;
+    shading::ProductOptions options;
+    std::unique_ptr<GpuProductPipeline> pipeline;
+  };
+  // Each pipeline holds its own copy of the field on the GPU: a few settings at most.
+  static constexpr std::size_t kCachedPipelines = 4;
+  GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options);
+
+  std::unique_ptr<HeadlessContext> context_;  // declared first: destroyed last
+  double context_ms_ = 0.0;
+  bool context_reported_ = false;
+  const terrain::HeightField* field_ = nullptr;
+  shading::ProductOptions options_;
+  bool keep_ = false;
+  int frames_ = 0;
+  std::deque<Entry> cache_;
+  const GpuProductPipeline* last_ = nullptr;
+  shading::FrameIndependentCache outputs_;
+  shading::FrameTimings timings_;
+};
+
+}  // namespace skylit::gpu

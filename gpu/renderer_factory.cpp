@@ -1,0 +1,123 @@
+#include "gpu/renderer_factory.h"
+
+#include "gpu/gpu_renderer.h"
+#include "shading/reference_renderer.h"
+
+#include <stdexcept>
+
+namespace skylit::gpu {
+namespace {
+
+using shading::Product;
+
+// Backend::Auto: each frame on the GPU where it can, else on the reference (made at its
+// first use). Field, options and the frames hint go to both.
+class AutoRenderer final : public shading::Renderer {
+ public:
+  explicit AutoRenderer(NoteCallback note) : note_(std::move(note)) {
+    try {
+      gpu_ = std::make_unique<GpuRenderer>();
+    } catch (const std::runtime_error&) {  // no GL 4.5 here: every frame on the reference
+    }
+  }
+  std::string description() const override {
+    if (last_on_gpu_) return gpu_->description();
+    return "reference (CPU" + (why_reference_.empty() ? std::string() : "; " + why_reference_) + ")";
+  }
+  bool on_gpu() const override { return last_on_gpu_; }
+  void set_field(const terrain::HeightField& field) override {
+    field_ = &field;
+    if (gpu_) gpu_->set_field(field);
+    if (reference_) reference_->set_field(field);
+  }
+  void set_options(const shading::ProductOptions& options) override {
+    options_ = options;
+    if (gpu_) gpu_->set_options(options);
+    if (reference_) reference_->set_options(options);
+  }
+  void expect_frames(int frames) override {
+    frames_ = frames;
+    if (gpu_) gpu_->expect_frames(frames);
+    if (reference_) reference_->expect_frames(frames);
+  }
+  void drop_horizons() override {
+    if (gpu_) gpu_->drop_horizons();
+    if (reference_) reference_->drop_horizons();
+  }
+  std::optional<std::string> lacks(Product, const shading::ProductOptions&) const override { return std::nullopt; }
+  shading::ProductBands frame(Product product, const shading::FrameInputs& inputs,
+                              const shading::ProgressCallback& progress) override {
+    const shading::ProductOptions options = shading::frame_options(options_, inputs);
+    if (gpu_ && !gpu_->lacks(product, options)) {
+      try {
+        auto bands = gpu_->frame(product, inputs, progress);
+        last_on_gpu_ = true;
+        last_ = gpu_.get();
+        return bands;
+      } catch (const std::invalid_argument&) {
+        throw;  // bad options or inputs: the reference would refuse them too
+      } catch (const std::runtime_error& e) {  // e.g. a field over the GPU's buffer limits
+        if (note_) note_(std::string("the gpu backend failed (") + e.what() + "); computing with the reference backend");
+        why_reference_ = "the gpu backend failed";
+      }
+    } else {
+      why_reference_ = gpu_ ? "the GPU pipeline lacks these options" : "no OpenGL 4.5 context";
+    }
+    last_on_gpu_ = false;
+    last_ = &reference();
+    return reference().frame(product, inputs, progress);
+  }
+  const shading::FrameTimings& last_timings() const override { return last_ ? last_->last_timings() : none_; }
+
+ private:
+  shading::Renderer& reference() {
+    if (!reference_) {
+      reference_ = std::make_unique<shading::ReferenceRenderer>();
+      if (field_) reference_->set_field(*field_);
+      reference_->set_options(options_);
+      reference_->expect_frames(frames_);
+    }
+    return *reference_;
+  }
+
+  NoteCallback note_;
+  std::unique_ptr<GpuRenderer> gpu_;
+  std::unique_ptr<shading::ReferenceRenderer> reference_;
+  const terrain::HeightField* field_ = nullptr;
+  shading::ProductOptions options_;
+  int frames_ = 1;
+  bool last_on_gpu_ = false;
+  std::string why_reference_;
+  const shading::Renderer* last_ = nullptr;
+  shading::FrameTimings none_;
+};
+
+}  // namespace
+
+std::vector<std::string> backend_names() { return {"auto", "gpu", "reference"}; }
+
+std::string_view backend_name(Backend backend) {
+  switch (backend) {
+    case Backend::Auto: return "auto";
+    case Backend::Gpu: return "gpu";
+    case Backend::Reference: return "reference";
+  }
+  return "auto";
+}
+
+std::optional<Backend> parse_backend(std::string_view name) {
+  for (Backend b : {Backend::Auto, Backend::Gpu, Backend::Reference})
+    if (backend_name(b) == name) return b;
+  return std::nullopt;
+}
+
+std::unique_ptr<shading::Renderer> make_renderer(Backend backend, NoteCallback note) {
+  switch (backend) {
+    case Backend::Gpu: return std::make_unique<GpuRenderer>();
+    case Backend::Reference: return std::make_unique<shading::ReferenceRenderer>();
+    case Backend::Auto: break;
+  }
+  return std::make_unique<AutoRenderer>(std::move(note));
+}
+
+}  // namespace skylit::gpu

@@ -1,0 +1,368 @@
+#include "shading/reference_renderer.h"
+
+#include "shading/azimuth.h"
+#include "shading/horizon_subsample.h"
+#include "shading/horizon_sweep.h"
+#include "shading/reference_pipeline.h"
+#include "shading/shading_modes.h"
+#include "shading/sun_light.h"
+#include "shading/surface_normals.h"
+#include "shading/wedge.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <stdexcept>
+
+namespace skylit::shading {
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// Share of the progress bar for the sun's pass in lit products (1 ray vs W).
+constexpr double kSunShare = 0.1;
+
+// Headings of the W product bands (geographic) or of the wedge samples (math frame).
+std::vector<Heading> geographic_headings(int w) {
+  std::vector<Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = heading_from_geographic(band_azimuth(k, w));
+  return h;
+}
+std::vector<Heading> math_headings(int w) {
+  std::vector<Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = heading_from_math(kTwoPi * k / w);
+  return h;
+}
+
+// Lambert shading of the sky light for one channel: ∫ L·V·max(n·ω, 0)/π dω, in the
+// chosen mode; LogBrdf works from the log-visibility, the others from V.
+class SkyShading {
+ public:
+  SkyShading(ShadingMode mode, int order, Radiance radiance, bool z_symmetric) {
+    ShadingSettings settings;
+    settings.mode = mode;
+    settings.order = order;
+    shader_ = std::make_unique<Shader>(settings, sky_input(mode, order, std::move(radiance), z_symmetric));
+  }
+  bool needs_log() const { return shader_->settings().mode == ShadingMode::LogBrdf; }
+  double radiance(std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n) const {
+    return needs_log() ? shader_->shade_log(log_vis, n, n) : shader_->shade(vis, n, n);
+  }
+
+ private:
+  std::unique_ptr<Shader> shader_;
+};
+
+// Sky shading and sun of a Lighting for `shaded` and `irradiance`: one sky shading per
+// output channel — R, G, B for a colour `shaded`, else the broadband luminance.
+class LitShading {
+ public:
+  LitShading(const Lighting& l, bool rgb, ShadingMode mode, int order) : sun_(l.sun.direction) {
+    const int channels = rgb ? 3 : 1;
+    for (int c = 0; c < channels; ++c) {
+      dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+      if (!l.sky) continue;
+      sky_.push_back(std::make_unique<SkyShading>(mode, order, channel_radiance(l.sky, rgb, c),
+                                                  l.sky->azimuthally_symmetric()));
+    }
+  }
+  int channels() const { return static_cast<int>(dni_.size()); }
+  // Irradiance of channel c (W/m²): π·(sky shading) (= ∫ L·V·max(n·ω, 0) dω) plus the sun.
+  double irradiance(int c, std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n,
+                    double shadow) const {
+    const double sky = sky_.empty() ? 0.0 : std::numbers::pi * sky_[c]->radiance(vis, log_vis, n);
+    return std::max(sky + sun_irradiance(n, sun_, dni_[c], shadow), 0.0);
+  }
+
+ private:
+  glm::dvec3 sun_;
+  std::vector<double> dni_;
+  std::vector<std::unique_ptr<SkyShading>> sky_;
+};
+
+// The raw horizons σ_k (no floor) of every texel, ProductOptions::subsample (products.h):
+// s = 1 marches each texel. s > 1 first marches the coarse texels of the whole field
+// (march_coarse); a texel's σ_k is then the bilinear mix of the coarse samples with a
+// non-zero weight, or its own march where one of them is not finite (nodata coarse
+// texel: NaN, never marched; no step on the grid: −∞). Holds (W_f/s)·(H_f/s)·W doubles.
+class HorizonSource {
+ public:
+  HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, const ProductOptions& options,
+                const std::vector<Heading>& headings)
+      : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, options.subsample},
+        rows_{field.height, options.subsample}, march_(options.march), sweep_(uses_sweep(field, options)) {}
+
+  // Sweep: the far slopes of every heading (W·N² floats), before horizons().
+  void sweep(unsigned threads, const ProgressCallback& progress) {
+    if (!sweep_) return;
+    far_.resize(headings_.size());
+    parallel_rows(static_cast<int>(headings_.size()), threads,
+                  [&](int k) { far_[k] = sweep_far_slopes(field_, headings_[k], march_); }, progress);
+  }
+
+  bool subsampled() const { return cols_.step > 1; }
+  bool sweeps() const { return sweep_; }
+  // Share of the texels' work done by march_coarse (for progress): coarse / (coarse + all).
+  double coarse_share() const {
+    if (!subsampled()) return 0.0;
+    const double coarse = static_cast<double>(cols_.count()) * rows_.count();
+    return coarse / (coarse + static_cast<double>(field_.size()));
+  }
+
+  void march_coarse(unsigned threads, const ProgressCallback& progress) {
+    if (!subsampled()) return;
+    const std::size_t w = headings_.size();
+    coarse_.assign(static_cast<std::size_t>(cols_.count()) * rows_.count() * w,
+                   std::numeric_limits<double>::quiet_NaN());
+    parallel_rows(rows_.count(), threads, [&](int cj) {
+      const int j = rows_.position(cj);
+      for (int ci = 0; ci < cols_.count(); ++ci) {
+        const int i = cols_.position(ci);
+        if (!field_.is_valid(i, j)) continue;  // stays NaN
+        for (std::size_t k = 0; k < w; ++k) coarse_[index(ci, cj, k)] = oracle_.max_elevation(i, j, headings_[k]);
+      }
+    }, progress);
+  }
+
+  void horizons(int i, int j, std::vector<double>& sigma) const {
+    if (sweep_) {
+      const std::size_t texel = static_cast<std::size_t>(j) * field_.width + i;
+      for (std::size_t k = 0; k < headings_.size(); ++k)
+        sigma[k] = sweep_max_elevation(field_, i, j, headings_[k], far_[k][texel], march_);
+      return;
+    }
+    if (!subsampled()) {
+      for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = oracle_.max_elevation(i, j, headings_[k]);
+      return;
+    }
+    const SubsampleAxis::Bracket x = cols_.bracket(i), y = rows_.bracket(j);
+    for (std::size_t k = 0; k < headings_.size(); ++k) {
+      auto along_row = [&](int cj) {
+        const double v0 = coarse_[index(x.c0, cj, k)];
+        return x.c1 == x.c0 ? v0 : (1.0 - x.a) * v0 + x.a * coarse_[index(x.c1, cj, k)];
+      };
+      const double r0 = along_row(y.c0);
+      // Non-finite iff a sample with a non-zero weight is (σ is never +∞).
+      const double v = y.c1 == y.c0 ? r0 : (1.0 - y.a) * r0 + y.a * along_row(y.c1);
+      sigma[k] = std::isfinite(v) ? v : oracle_.max_elevation(i, j, headings_[k]);
+    }
+  }
+
+ private:
+  std::size_t index(int ci, int cj, std::size_t k) const {
+    return (static_cast<std::size_t>(cj) * cols_.count() + ci) * headings_.size() + k;
+  }
+
+  const HorizonOracle& oracle_;
+  const terrain::HeightField& field_;
+  const std::vector<Heading>& headings_;
+  SubsampleAxis cols_, rows_;
+  std::vector<double> coarse_;  // [(cj·count_x + ci)·W + k]
+  const MarchOptions& march_;
+  bool sweep_;
+  std::vector<std::vector<std::uint16_t>> far_;  // sweep: codes per heading, [j·width + i]
+};
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void ReferenceRenderer::set_options(const ProductOptions& options) {
+  if (!same_horizon_options(options, options_)) drop_horizons();
+  options_ = options;
+}
+
+void ReferenceRenderer::drop_horizons() {
+  visibility_ = {};
+  outputs_.clear();
+  frames_ = 0;
+}
+
+ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress) {
+  if (!field_) throw std::logic_error("ReferenceRenderer::frame: no field (set_field)");
+  validate(inputs);
+  const auto start = std::chrono::steady_clock::now();
+  timings_ = {};
+  const ProductOptions options = frame_options(options_, inputs);
+  ProductBands out;
+  if (const ProductBands* kept = FrameIndependentCache::applies(product) ? outputs_.find(product, *field_, options)
+                                                                         : nullptr) {
+    out = *kept;
+    timings_.horizons_reused = true;
+    if (progress) progress(1.0);
+  } else {
+    out = render(product, options, progress);
+    if (FrameIndependentCache::applies(product) && (keep_ || frames_ > 0)) outputs_.store(product, *field_, options, out);
+  }
+  ++frames_;
+  timings_.frame_ms = ms_since(start);
+  return out;
+}
+
+ProductBands ReferenceRenderer::render(Product product, const ProductOptions& options,
+                                       const ProgressCallback& progress) {
+  const terrain::HeightField& field = *field_;
+  if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
+  validate_subsample(options);
+  const HorizonOracle oracle(field, options);
+  const int w_march = options.march.azimuths;
+  const int w_sky = options.exact ? options.exact_options.sky_azimuths : w_march;
+  if (w_sky < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
+  if (!(options.shaded.albedo >= 0.0) || !(options.shaded.exposure > 0.0))
+    throw std::invalid_argument("shaded: albedo must be ≥ 0 and exposure > 0");
+  const bool lit = uses_lighting(product, options);
+  if (lit && !options.lighting)
+    throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
+  if (lit) validate(*options.lighting);
+  const bool rgb = lit && product == Product::Shaded && options.lighting->colour;
+
+  ProductBands out;
+  out.width = field.width;
+  out.height = field.height;
+  out.bands = product == Product::Horizon ? w_march : rgb ? 3 : 1;
+  out.data.assign(static_cast<std::size_t>(out.bands) * field.size(), kNaN);
+  if (product == Product::Horizon)
+    for (int k = 0; k < w_march; ++k) out.band_names.push_back(horizon_band_name(k, w_march));
+  else if (rgb)
+    out.band_names = {"red", "green", "blue"};
+  else
+    out.band_names.emplace_back(product_name(product));
+  auto put = [&](int b, int i, int j, double v) {
+    out.data[(static_cast<std::size_t>(b) * field.height + j) * field.width + i] = static_cast<float>(v);
+  };
+
+  // Sun: the visible disc fraction of every texel, in its own pass (its own march).
+  std::vector<float> shadow;
+  const bool sun_lit = lit && sky::luminance(options.lighting->sun.dni) > 0.0;
+  if (product == Product::Shadow || sun_lit) {
+    const glm::dvec3& s = options.lighting->sun.direction;
+    const bool alone = product == Product::Shadow;
+    shadow = shadow_fraction_field(field, {sky::azimuth_of(s), sky::elevation_of(s)}, sun_shadow_options(options),
+                                   [&](double f) {
+                                     if (progress) progress(alone ? f : kSunShare * f);
+                                   });
+    if (alone) {
+      std::copy(shadow.begin(), shadow.end(), out.data.begin());
+      return out;
+    }
+  }
+  const auto main_progress = [&](double f) {
+    if (progress) progress(shadow.empty() ? f : kSunShare + (1.0 - kSunShare) * f);
+  };
+
+  // Shading set-up: wedge operator, and either the default shading mode (sky × BRDF
+  // table, Lambert) under a uniform sky of radiance 1 above the horizontal, or the
+  // lighting's sky tables and sun.
+  const bool needs_visibility = product == Product::Shaded || product == Product::Irradiance;
+  const sh::WedgeOperator* wedge = nullptr;
+  std::unique_ptr<SkyShading> uniform_sky;
+  std::unique_ptr<LitShading> lighting;
+  const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
+  if (needs_visibility) {
+    const ShadedOptions& s = options.shaded;
+    wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, s.wedge);
+    if (lit)
+      lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
+    else
+      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order, uniform_sky_radiance(), true);
+  }
+  // Tone map of the lit `shaded` (lighting.h): E → linear display value.
+  const double display_per_irradiance =
+      lit ? shaded_display_scale(options.shaded, *options.lighting) : 0.0;
+
+  // The visibility of an earlier frame on this field revision and these horizon options,
+  // or (keeping) this frame's, for the frames after it.
+  const bool reuse = needs_visibility && visibility_.field_id == field.id.value() &&
+                     visibility_.revision == field.revision && same_horizon_options(visibility_.options, options);
+  const bool keep = needs_visibility && !reuse && (keep_ || frames_ > 0);
+  if (keep) {
+    visibility_ = {field.id.value(), field.revision, options, static_cast<int>(wedge->rows()), {}};
+    visibility_.values.assign(field.size() * wedge->rows(), 0.0);
+  }
+  timings_.horizons_reused = reuse;
+
+  const std::vector<Heading> headings =
+      product == Product::Horizon ? geographic_headings(w_march)
+      : needs_visibility          ? math_headings(w_sky)
+                                  : geographic_headings(w_sky);
+
+  // Raw horizons: with sub-sampling, the coarse texels are marched first.
+  HorizonSource horizons(oracle, field, options, headings);
+  double coarse_share = 0.0, sweep_share = 0.0;
+  if (!reuse) {
+    coarse_share = horizons.coarse_share();
+    horizons.march_coarse(options.threads, [&](double f) { main_progress(coarse_share * f); });
+    horizons.sweep(options.threads, [&](double f) { main_progress(0.5 * f); });
+    sweep_share = horizons.sweeps() ? 0.5 : 0.0;
+  }
+
+  parallel_rows(field.height, options.threads, [&](int j) {
+    std::vector<double> sigma(headings.size());
+    std::vector<double> scratch, vis, log_vis;
+    if (wedge) {
+      scratch.resize(static_cast<std::size_t>(wedge->azimuths()) * wedge->nlp_order());
+      vis.resize(wedge->rows());
+      if (log_route) log_vis.resize(wedge->rows());
+    }
+    for (int i = 0; i < field.width; ++i) {
+      if (!field.is_valid(i, j)) continue;  // stays NaN
+      const glm::dvec3 n = horn_normal(field, i, j);
+      if (!reuse) horizons.horizons(i, j, sigma);
+      switch (product) {
+        case Product::Horizon:
+          for (int k = 0; k < w_march; ++k)
+            put(k, i, j, std::max(sigma[k], oracle.ground_floor(j, headings[k])) * 180.0 / std::numbers::pi);
+          break;
+        case Product::Svf: put(0, i, j, svf_from_horizon(sigma)); break;
+        case Product::Skyview: put(0, i, j, skyview_from_horizon(sigma, n)); break;
+        case Product::Shaded:
+        case Product::Irradiance: {
+          std::vector<double>& v = log_route ? log_vis : vis;
+          const std::size_t texel = static_cast<std::size_t>(j) * field.width + i;
+          if (reuse) {
+            std::copy_n(visibility_.values.begin() + static_cast<std::ptrdiff_t>(texel * v.size()), v.size(), v.begin());
+          } else {
+            // Visibility horizon: floored at the tangent plane (math-notes §10.14).
+            for (std::size_t k = 0; k < sigma.size(); ++k)
+              sigma[k] = std::clamp(std::max(sigma[k], tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
+                                    std::numbers::pi / 2);
+            if (log_route)
+              sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
+            else
+              sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
+            if (keep)
+              std::copy(v.begin(), v.end(), visibility_.values.begin() + static_cast<std::ptrdiff_t>(texel * v.size()));
+          }
+          if (!lighting) {
+            const double radiance = options.shaded.albedo * uniform_sky->radiance(vis, log_vis, n);
+            put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
+            break;
+          }
+          const double sun = shadow.empty() ? 0.0 : shadow[texel];
+          for (int c = 0; c < lighting->channels(); ++c) {
+            const double e = lighting->irradiance(c, vis, log_vis, n, sun);
+            put(c, i, j, product == Product::Irradiance ? e : srgb_code_value(e * display_per_irradiance));
+          }
+          break;
+        }
+        case Product::Shadow: break;  // returned above
+      }
+    }
+  }, [&](double f) { main_progress(coarse_share + sweep_share + (1.0 - coarse_share - sweep_share) * f); });
+  return out;
+}
+
+ProductBands compute_product(const terrain::HeightField& field, Product product, const ProductOptions& options,
+                             const ProgressCallback& progress) {
+  ReferenceRenderer renderer;
+  renderer.set_field(field);
+  renderer.set_options(options);
+  return renderer.frame(product, FrameInputs{options.lighting, {}, std::nullopt}, progress);
+}
+
+}  // namespace skylit::shading

@@ -1,0 +1,57 @@
+#include "shading/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace skylit::shading {
+
+void validate(const FrameInputs& inputs) {
+  for (const sh::Sphere& s : inputs.spheres)
+    if (!std::isfinite(s.centre.x) || !std::isfinite(s.centre.y) || !std::isfinite(s.centre.z) ||
+        !(s.radius > 0.0) || !std::isfinite(s.radius))
+      throw std::invalid_argument("a sphere blocker needs a finite centre and a finite radius > 0");
+  if (!inputs.spheres.empty())
+    throw std::invalid_argument("sphere blockers are not shaded yet: a frame with " +
+                                std::to_string(inputs.spheres.size()) + " sphere(s) was refused");
+  if (inputs.exposure && !(*inputs.exposure > 0.0 && std::isfinite(*inputs.exposure)))
+    throw std::invalid_argument("a frame's exposure must be finite and > 0");
+  if (inputs.lighting) validate(*inputs.lighting);
+}
+
+ProductOptions frame_options(const ProductOptions& options, const FrameInputs& inputs) {
+  ProductOptions o = options;
+  o.lighting = inputs.lighting;
+  if (inputs.exposure) o.shaded.exposure = *inputs.exposure;
+  return o;
+}
+
+bool same_horizon_options(const ProductOptions& a, const ProductOptions& b) {
+  const MarchOptions &m = a.march, &n = b.march;
+  return m.azimuths == n.azimuths && m.k_v == n.k_v && m.levels == n.levels && m.level_offset == n.level_offset &&
+         m.max_distance_m == n.max_distance_m && m.smooth_max == n.smooth_max && m.use_pyramid == n.use_pyramid &&
+         m.level_interpolation == n.level_interpolation && m.curvature.enabled == n.curvature.enabled &&
+         m.curvature.radius_m == n.curvature.radius_m && m.curvature.refraction_k == n.curvature.refraction_k &&
+         m.method == n.method && m.sweep_near_steps == n.sweep_near_steps && m.sweep_lines == n.sweep_lines &&
+         a.exact == b.exact && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
+         a.exact_options.step_texels == b.exact_options.step_texels && a.subsample == b.subsample &&
+         a.shaded.mode == b.shaded.mode && a.shaded.sh_order == b.shaded.sh_order &&
+         a.shaded.nlp_order == b.shaded.nlp_order && a.shaded.wedge == b.shaded.wedge;
+}
+
+const ProductBands* FrameIndependentCache::find(Product product, const terrain::HeightField& field,
+                                                const ProductOptions& options) const {
+  for (const Entry& e : entries_)
+    if (e.product == product && e.field_id == field.id.value() && e.revision == field.revision &&
+        same_horizon_options(e.options, options))
+      return &e.bands;
+  return nullptr;
+}
+
+void FrameIndependentCache::store(Product product, const terrain::HeightField& field, const ProductOptions& options,
+                                  const ProductBands& bands) {
+  std::erase_if(entries_, [&](const Entry& e) { return e.product == product; });
+  entries_.push_back({product, field.id.value(), field.revision, options, bands});
+}
+
+}  // namespace skylit::shading

@@ -1,0 +1,118 @@
+// The renderer every front end drives (DESIGN.md "The renderer"): a resident height
+// field, horizons computed when the field or the options change and not per frame, and
+// many cheap frames, each with its own sun, sky, blockers and exposure. Implemented by
+// the CPU reference (shading/reference_renderer.h) and the GPU (gpu/gpu_renderer.h);
+// gpu/renderer_factory.h picks one, with the auto fallback.
+//
+// A frame's products are those of compute_product (products.h) with the options set by
+// set_options() and the frame's lighting: a renderer gives the same bands as
+// compute_product would for that field, product, options and lighting.
+#pragma once
+
+#include "shading/lighting.h"
+#include "shading/products.h"
+#include "shading/sphere_blocker.h"
+#include "terrain/height_field.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace skylit::shading {
+
+struct FrameInputs {
+  // The sun and sky. shadow and irradiance need one; `shaded` without one is the
+  // uniform-sky relief; horizon, svf and skyview ignore it.
+  std::optional<Lighting> lighting;
+  // Blockers (aircraft), in the field's frame: x east and y north in metres from the
+  // centre of texel (0, 0) (texel (i, j) is at (i·dx, −j·dy)), z a height in the DEM's
+  // vertical datum. Validated here; their shading arrives with the aircraft work, and a
+  // frame with spheres is refused until then rather than shaded without them.
+  std::vector<sh::Sphere> spheres;
+  // Replaces ProductOptions::shaded.exposure for this frame (`shaded` only).
+  std::optional<double> exposure;
+};
+
+// Throws std::invalid_argument (one line) for a non-finite or non-positive sphere.
+void validate(const FrameInputs& inputs);
+
+// Where a frame's time went (milliseconds; wall clock unless marked).
+struct FrameTimings {
+  double upload_ms = 0.0;        // the height field to the GPU (its edited rows only, or nothing)
+  std::size_t uploaded_bytes = 0;
+  double pyramid_ms = 0.0;       // GPU pyramid build (0 without one)
+  double sweep_ms = 0.0;         // the sweep's far field (0 without it, or reused)
+  double sun_ms = 0.0;           // GPU timer: the sun's shadow pass and its sweep
+  double march_ms = 0.0;         // GPU timer, the sweep included (Mesa llvmpipe reports ~0 for compute)
+  double products_ms = 0.0;      // GPU timer
+  double context_ms = 0.0;       // creating the GPU context (the renderer's first frame)
+  double compile_ms = 0.0;       // kernels compiled for this frame (0 when cached)
+  double frame_ms = 0.0;         // the whole frame, read-back included
+  bool horizons_reused = false;  // the horizons (or the visibility built from them) were kept
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+
+  // "gpu (llvmpipe (LLVM 15.0.6, 256 bits), EGL surfaceless)", "reference (CPU)", …
+  // for the last frame (an auto renderer may change backend between frames).
+  virtual std::string description() const = 0;
+  virtual bool on_gpu() const = 0;
+
+  // The field stays resident: the renderer keeps a reference, which must outlive it or
+  // the next set_field(). Edits through terrain/editing.h (mark_dirty) are seen at the
+  // next frame: the GPU re-uploads only the edited rows, and horizons are recomputed.
+  virtual void set_field(const terrain::HeightField& field) = 0;
+  // Horizon, shading and quality options; their `lighting` is ignored (it is per frame).
+  // Horizons are kept while options that change them stay the same.
+  virtual void set_options(const ProductOptions& options) = 0;
+  // How many frames the caller expects to render on this field and these options: with
+  // more than one, the first frame keeps what later frames reuse (GPU: the visibility,
+  // 4·n² bytes per texel). Without it the second frame starts keeping.
+  virtual void expect_frames(int frames) = 0;
+  // Forgets the kept horizons and visibility (the kernels stay compiled): the next
+  // frame does all its work, as a benchmark of one whole frame needs.
+  virtual void drop_horizons() = 0;
+
+  // Why this renderer cannot compute `product` with these options (one line), or nothing.
+  virtual std::optional<std::string> lacks(Product product, const ProductOptions& options) const = 0;
+
+  // One frame. Throws std::invalid_argument for bad options or inputs (a lit product
+  // without a lighting, spheres), std::runtime_error when the backend cannot run it.
+  virtual ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) = 0;
+  virtual const FrameTimings& last_timings() const = 0;
+};
+
+// The options of a frame: `options` with the frame's lighting and exposure.
+ProductOptions frame_options(const ProductOptions& options, const FrameInputs& inputs);
+
+// Whether two option sets give the same horizons, hence the same visibility: every
+// field that reaches the march, the sweep or the visibility's SH (not the lighting,
+// exposure, albedo or threads).
+bool same_horizon_options(const ProductOptions& a, const ProductOptions& b);
+
+// Keeps the last bands of products that depend on nothing per frame (horizon, svf,
+// skyview), for the field revision and options they were computed for.
+class FrameIndependentCache {
+ public:
+  static bool applies(Product product) {
+    return product == Product::Horizon || product == Product::Svf || product == Product::Skyview;
+  }
+  const ProductBands* find(Product product, const terrain::HeightField& field, const ProductOptions& options) const;
+  void store(Product product, const terrain::HeightField& field, const ProductOptions& options, const ProductBands& bands);
+  void clear() { entries_.clear(); }
+
+ private:
+  struct Entry {
+    Product product;
+    std::uint64_t field_id, revision;
+    ProductOptions options;
+    ProductBands bands;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace skylit::shading

@@ -1,0 +1,172 @@
+// The GPU renderer (gpu/gpu_renderer.h) and the library's backend choice
+// (gpu/renderer_factory.h): frames of a series equal a fresh GpuProductPipeline built
+// for each frame's lighting bit for bit, though later frames reuse the kept visibility
+// and compile nothing; an edit recomputes; a change in the lighting's shape (colour, sun
+// below the horizon) gets its own kernels; auto takes the reference where the GPU lacks
+// the product. Runs on Mesa llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+#include "gpu_tolerances.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "gpu/gpu_pipeline.h"
+#include "gpu/gpu_renderer.h"
+#include "gpu/renderer_factory.h"
+#include "shading/lighting.h"
+#include "shading/products.h"
+#include "terrain/editing.h"
+
+namespace skylit::gpu {
+namespace {
+
+using shading::FrameInputs;
+using shading::Lighting;
+using shading::Product;
+using shading::ProductBands;
+using shading::ProductOptions;
+
+using GpuRendererTest = testing::GpuTest;
+
+Lighting lighting_at(double azimuth_deg, double elevation_deg, const std::string& sky = "uniform") {
+  shading::LightingRequest r;
+  r.sun_azimuth_deg = azimuth_deg;
+  r.sun_elevation_deg = elevation_deg;
+  r.sky = sky;
+  return shading::resolve_lighting(r, std::nullopt).lighting;
+}
+
+ProductOptions small_options() {
+  ProductOptions o;
+  o.march.azimuths = 8;
+  return o;
+}
+
+bool bit_identical(const ProductBands& a, const ProductBands& b) {
+  return a.width == b.width && a.height == b.height && a.bands == b.bands && a.band_names == b.band_names &&
+         a.data.size() == b.data.size() && std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+
+// A pipeline built for this one frame, on the renderer's context.
+ProductBands fresh(GpuRenderer& r, const terrain::HeightField& f, Product p, ProductOptions o, const Lighting& l) {
+  r.context().make_current();
+  o.lighting = l;
+  return GpuProductPipeline(p, o).compute(f);
+}
+
+TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
+  const terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  GpuRenderer r;
+  r.set_field(f);
+  r.set_options(o);
+  r.expect_frames(3);
+  const Lighting suns[] = {lighting_at(90, 10), lighting_at(180, 50), lighting_at(270, 25)};
+  for (Product p : {Product::Irradiance, Product::Shaded, Product::Shadow}) {
+    for (int k = 0; k < 3; ++k) {
+      const ProductBands got = r.frame(p, {suns[k], {}, std::nullopt});
+      const shading::FrameTimings t = r.last_timings();
+      if (p != Product::Shadow) {
+        EXPECT_EQ(t.horizons_reused, k > 0) << shading::product_name(p) << " frame " << k;
+      }
+      if (k > 0) {
+        EXPECT_EQ(t.compile_ms, 0.0) << shading::product_name(p) << " frame " << k;
+        EXPECT_EQ(t.uploaded_bytes, 0u) << shading::product_name(p) << " frame " << k;
+      }
+      EXPECT_TRUE(bit_identical(got, fresh(r, f, p, o, suns[k]))) << shading::product_name(p) << " frame " << k;
+    }
+  }
+}
+
+TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
+  terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  GpuRenderer r;
+  r.set_field(f);
+  r.set_options(o);
+  r.expect_frames(2);
+  const Lighting sun = lighting_at(135, 30);
+  r.frame(Product::Irradiance, {sun, {}, std::nullopt});
+  const terrain::PixelRect edit{20, 30, 10, 6};
+  std::vector<float> raised;
+  for (int j = edit.y0; j < edit.y1(); ++j)
+    for (int i = edit.x0; i < edit.x1(); ++i) raised.push_back(f.at(i, j) + 400.0f);
+  terrain::replace_heights(f, edit, raised);
+  const ProductBands after = r.frame(Product::Irradiance, {sun, {}, std::nullopt});
+  EXPECT_FALSE(r.last_timings().horizons_reused);
+  EXPECT_GT(r.last_timings().uploaded_bytes, 0u);
+  EXPECT_TRUE(bit_identical(after, fresh(r, f, Product::Irradiance, o, sun)));
+}
+
+TEST_F(GpuRendererTest, ALightingOfAnotherShapeGetsItsOwnKernels) {
+  const terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  GpuRenderer r;
+  r.set_field(f);
+  r.set_options(o);
+  r.expect_frames(3);
+  const Lighting grey = lighting_at(120, 35), colour = lighting_at(120, 35, "preetham"), night = lighting_at(120, -5);
+  ASSERT_TRUE(colour.colour && !grey.colour);
+  for (const Lighting& l : {grey, colour, night}) {
+    const ProductBands got = r.frame(Product::Shaded, {l, {}, std::nullopt});
+    EXPECT_EQ(got.bands, l.colour ? 3 : 1);
+    EXPECT_TRUE(bit_identical(got, fresh(r, f, Product::Shaded, o, l)));
+  }
+}
+
+TEST_F(GpuRendererTest, SeriesFramesMatchTheReference) {
+  const terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  GpuRenderer r;
+  r.set_field(f);
+  r.set_options(o);
+  r.expect_frames(2);
+  const Lighting sun = lighting_at(300, 20);
+  r.frame(Product::Irradiance, {lighting_at(60, 40), {}, std::nullopt});
+  const ProductBands gpu = r.frame(Product::Irradiance, {sun, {}, std::nullopt});
+  ASSERT_TRUE(r.last_timings().horizons_reused);
+  ProductOptions lit = o;
+  lit.lighting = sun;
+  const ProductBands cpu = shading::compute_product(f, Product::Irradiance, lit);
+  std::size_t within = 0, compared = 0;
+  const double dni = sky::luminance(sun.sun.dni);
+  for (std::size_t k = 0; k < cpu.data.size(); ++k) {
+    if (std::isnan(cpu.data[k])) continue;
+    ++compared;
+    const double diff = std::abs(gpu.data[k] - cpu.data[k]);
+    EXPECT_LE(diff, tolerance::kIrradianceRelTol * std::abs(cpu.data[k]) + 0.02 * dni) << "texel " << k;
+    within += diff <= tolerance::kIrradianceRelTol * std::abs(cpu.data[k]);
+  }
+  EXPECT_GE(static_cast<double>(within) / compared, tolerance::kMinFraction);
+}
+
+TEST_F(GpuRendererTest, AutoTakesTheReferenceWhereTheGpuLacksTheProduct) {
+  const terrain::HeightField f = testing::synthetic_field({.width = 24, .height = 20, .nodata_i = 3, .nodata_j = 4});
+  std::vector<std::string> notes;
+  const auto r = make_renderer(Backend::Auto, [&](const std::string& n) { notes.push_back(n); });
+  ProductOptions o = small_options();
+  r->set_field(f);
+  r->set_options(o);
+  r->frame(Product::Svf, {});
+  EXPECT_TRUE(r->on_gpu());
+  EXPECT_EQ(r->description().rfind("gpu (", 0), 0u) << r->description();
+  o.exact = true;  // the sun's exact march is CPU-only
+  o.exact_options.sky_azimuths = 16;
+  r->set_options(o);
+  r->frame(Product::Shadow, {lighting_at(200, 15), {}, std::nullopt});
+  EXPECT_FALSE(r->on_gpu());
+  EXPECT_EQ(r->description(), "reference (CPU; the GPU pipeline lacks these options)");
+  EXPECT_TRUE(notes.empty());
+  const auto gpu = make_renderer(Backend::Gpu);
+  gpu->set_field(f);
+  gpu->set_options(o);
+  EXPECT_THROW(gpu->frame(Product::Shadow, {lighting_at(200, 15), {}, std::nullopt}), std::invalid_argument);
+  EXPECT_TRUE(gpu->lacks(Product::Shadow, shading::frame_options(o, {lighting_at(200, 15), {}, std::nullopt})));
+}
+
+}  // namespace
+}  // namespace skylit::gpu

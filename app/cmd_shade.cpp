@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/shade_output.h"
+#include "app/shade_series.h"
 #include "gpu/renderer_factory.h"
 #include "gpu/timer.h"
 
@@ -13,6 +14,8 @@
 #include "shading/products.h"
 #include "shading/quality.h"
 #include "shading/reference_pipeline.h"
+#include "shading/summed_products.h"
+#include "shading/time_series.h"
 #include "terrain/dem_reader.h"
 #include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
@@ -57,6 +60,7 @@ struct ShadeArgs {
   bool timings = false;
   shading::LightingRequest lighting;
   bool no_sun = false;
+  std::size_t max_frames = shading::kDefaultMaxFrames;
 };
 
 // The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
@@ -160,15 +164,104 @@ std::string sweep_fallback_note(const terrain::HeightField& field, const shading
   return "--horizons sweep: " + why + "; the march runs instead";
 }
 
+// Upper bound of a multi-band series file held in memory before it is written.
+constexpr std::size_t kMaxSeriesFileBytes = std::size_t{4} << 30;
+
+// The frames of --time when it is a series (an interval, a list of several times, a
+// date) or the product is a sum over time; nullopt for a single time or none.
+std::optional<shading::TimeSpec> series_spec(const ShadeArgs& a, const std::optional<shading::SummedProduct>& summed) {
+  if (a.lighting.time.empty()) {
+    if (summed)
+      throw std::invalid_argument("-p " + a.product + " sums over time: give --time as an interval "
+                                  "(2026-06-21T04:00Z/2026-06-21T20:00Z/PT10M), a list of times or a date (2026-06-21)");
+    return std::nullopt;
+  }
+  shading::TimeSeriesOptions o;
+  o.max_frames = a.max_frames;
+  shading::TimeSpec spec;
+  try {
+    spec = shading::parse_time_spec(a.lighting.time, o);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--time: " + std::string(e.what()) +
+                                (std::string(e.what()).find("frames") != std::string::npos ? " (raise --max-frames)" : ""));
+  }
+  if (!spec.date && spec.instants.size() == 1) {
+    if (summed) throw std::invalid_argument("-p " + a.product + " sums over time: one --time is no interval");
+    return std::nullopt;
+  }
+  if (a.lighting.sun_azimuth_deg || a.lighting.sun_elevation_deg)
+    throw std::invalid_argument("a --time series moves the sun: give no --sun-azimuth or --sun-elevation");
+  return spec;
+}
+
+// The place of a series' sun: --lat/--lon, else the DEM's centre.
+std::optional<sun::Observer> series_place(const ShadeArgs& a, const terrain::HeightField& field) {
+  if (a.lighting.latitude_deg && a.lighting.longitude_deg)
+    return sun::Observer{*a.lighting.latitude_deg, *a.lighting.longitude_deg, a.lighting.height_m};
+  auto place = dem_place(field);
+  if (!place) throw std::invalid_argument("--time needs the DEM's location, but the DEM has no CRS: give --lat and --lon");
+  return place;
+}
+
+int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
+                     const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
+                     const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
+                     OutputSpec summed_out) {
+  SeriesJob job;
+  job.product = product;
+  job.summed = summed;
+  job.request = request;
+  job.place = series_place(a, field);
+  job.quiet = a.quiet;
+  job.timings = a.timings;
+  const shading::TimeSeries series = shading::resolve_time_series(times, job.place);
+  if (!series.note.empty() && !a.quiet) std::cerr << "skylit: note: " << series.note << "\n";
+  if (series.instants.empty() && !summed)
+    throw std::invalid_argument("--time " + a.lighting.time + ": no frames (" + series.note + ")");
+  job.instants = series.instants;
+  if (summed) {
+    job.outputs.files.push_back(std::move(summed_out));
+  } else {
+    const std::size_t bands = product == shading::Product::Shaded ? 3 : 1;  // at most: colour
+    job.outputs = resolve_frame_outputs(a.output, a.format, product, a.creation_options, a.overwrite,
+                                        static_cast<int>(job.instants.size()), field.size() * bands * sizeof(float),
+                                        kMaxSeriesFileBytes);
+  }
+  if (!a.quiet)
+    std::cerr << "skylit: " << job.instants.size() << " times from "
+              << (job.instants.empty() ? std::string("-") : sun::format_utc_time(job.instants.front())) << " to "
+              << (job.instants.empty() ? std::string("-") : sun::format_utc_time(job.instants.back())) << "\n";
+  const auto renderer = make_shade_renderer(backend, a.quiet);
+  shading::ProductOptions frame_opt = opt;
+  frame_opt.lighting = shading::Lighting{};  // lit: the renderer's check sees a lit product
+  if (const auto why = renderer->lacks(product, frame_opt))
+    throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
+                                "; use --backend reference (or auto)");
+  renderer->set_field(field);
+  renderer->set_options(opt);
+  run_series(*renderer, field, job);
+  return 0;
+}
+
 int run_shade(const ShadeArgs& a) {
-  const auto product = shading::parse_product(a.product);
-  if (!product) throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() + ")");
-  OutputSpec out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
+  const auto summed = shading::parse_summed_product(a.product);
+  const auto product = summed ? std::optional(shading::frame_product(*summed)) : shading::parse_product(a.product);
+  if (!product)
+    throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() +
+                                ", insolation, sun-hours)");
+  const std::optional<shading::TimeSpec> times = series_spec(a, summed);
+  using shading::Product;
+  if (times && !summed && *product != Product::Shadow && *product != Product::Irradiance && *product != Product::Shaded)
+    throw std::invalid_argument("a --time series needs a product lit by the sun: shadow, irradiance, shaded, "
+                                "insolation or sun-hours (not " + a.product + ")");
+  OutputSpec out;
+  if (!times || summed) out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
   const gpu::Backend backend = parse_backend_arg(a.backend);
   const bool lit = *product == shading::Product::Shadow || *product == shading::Product::Irradiance ||
                    (*product == shading::Product::Shaded && !sky_only_default(a));
   shading::LightingRequest request = a.lighting;
   request.sun = !a.no_sun;
+  if (times) request.time.clear();  // each frame sets its own
   if (lit) shading::validate(request);  // before reading the DEM
   shading::validate_subsample(a.options);  // --subsample with --exact
 
@@ -181,6 +274,7 @@ int run_shade(const ShadeArgs& a) {
   opt.threads = a.threads;
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
+  if (times) return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out));
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
     opt.lighting = resolved.lighting;
@@ -217,7 +311,10 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--seed", args->seed, "Seed of the synthetic scene")->capture_default_str();
   cmd->add_option("--size", args->size, "Width and height of the synthetic scene (pixels)")
       ->check(CLI::Range(2, 16384))->capture_default_str();
-  cmd->add_option("-p,--product", args->product, "horizon | svf | skyview | shaded | shadow | irradiance")->capture_default_str();
+  cmd->add_option("-p,--product", args->product,
+                  "horizon | svf | skyview | shaded | shadow | irradiance | insolation (Wh/m^2 over --time) | "
+                  "sun-hours (hours of direct sun over --time)")
+      ->capture_default_str();
   cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
   cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
   cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
@@ -280,7 +377,13 @@ void add_shade_command(CLI::App& root, Action& run) {
   auto& l = args->lighting;
   cmd->add_option("--time", l.time,
                   "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "
-                  "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon)");
+                  "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon); a series: an interval "
+                  "START/END/STEP (2026-06-21T04:00Z/2026-06-21T20:00Z/PT15M), a comma-separated list, or a date "
+                  "(2026-06-21: that local day, sunrise to sunset); frames go to one file each when OUTPUT has a "
+                  "%d (frames/shadow_%04d.png), else to one GeoTIFF band each");
+  cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
+      ->capture_default_str();
   cmd->add_option("--lat", l.latitude_deg, "Latitude for --time, degrees north (default: the DEM's centre)");
   cmd->add_option("--lon", l.longitude_deg, "Longitude for --time, degrees east (default: the DEM's centre)");
   cmd->add_option("--sun-azimuth,--azimuth", l.sun_azimuth_deg,

@@ -640,6 +640,12 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   const int out_bands = mProduct == Product::Horizon ? bands : needs_visibility(mProduct) ? k.channels : 1;
   const std::size_t texels = field.size();
 
+  if (auto night = shading::night_shadow(mProduct, {mOptions.lighting, {}, std::nullopt}, field)) {
+    if (progress) progress(1.0);
+    t.frame_ms = ms_since(start);
+    if (timings) *timings = t;
+    return std::move(*night);
+  }
   if (mProduct == Product::Shadow) {  // the sun pass alone
     const auto upload_start = Clock::now();
     t.uploaded_bytes = k.field.sync(field);

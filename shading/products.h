@@ -23,7 +23,8 @@
 //              channel (3 bands R, G, B when the lighting is colour), tone-mapped as
 //              lighting.h states.
 //  * shadow  : visible fraction of the solar disc (sun_light.h: the sun's own march, or
-//              the exact march with `exact`), 0…1. Needs lighting (its sun direction).
+//              the exact march with `exact`), 0…1; 0 while the sun's centre is below the
+//              horizon (renderer.h night_shadow). Needs lighting (its sun direction).
 //  * irradiance: W/m² on the surface, broadband (luminance of RGB):
 //              E_sky = ∫ L·V·max(n·ω, 0) dω = π·Σ_k V_k·T_k(n) (the SH visibility of
 //              `shaded` and a Lambert sky table of the lighting's sky), plus

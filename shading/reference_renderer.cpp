@@ -190,8 +190,10 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
   timings_ = {};
   const ProductOptions options = frame_options(options_, inputs);
   ProductBands out;
-  if (const ProductBands* kept = FrameIndependentCache::applies(product) ? outputs_.find(product, *field_, options)
-                                                                         : nullptr) {
+  if (auto night = night_shadow(product, inputs, *field_)) {
+    out = std::move(*night);
+  } else if (const ProductBands* kept = FrameIndependentCache::applies(product) ? outputs_.find(product, *field_, options)
+                                                                                : nullptr) {
     out = *kept;
     timings_.horizons_reused = true;
     if (progress) progress(1.0);

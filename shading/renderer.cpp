@@ -1,7 +1,10 @@
 #include "shading/renderer.h"
 
+#include "shading/time_integral.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace skylit::shading {
@@ -24,6 +27,15 @@ ProductOptions frame_options(const ProductOptions& options, const FrameInputs& i
   o.lighting = inputs.lighting;
   if (inputs.exposure) o.shaded.exposure = *inputs.exposure;
   return o;
+}
+
+std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inputs, const terrain::HeightField& field) {
+  if (product != Product::Shadow || !inputs.lighting || sun_above_horizon(inputs.lighting->sun)) return std::nullopt;
+  ProductBands out{field.width, field.height, 1, std::vector<float>(field.size(), 0.0f),
+                   {std::string(product_name(product))}};
+  for (std::size_t t = 0; t < field.size(); ++t)
+    if (!field.valid[t]) out.data[t] = std::numeric_limits<float>::quiet_NaN();
+  return out;
 }
 
 bool same_horizon_options(const ProductOptions& a, const ProductOptions& b) {

@@ -89,6 +89,12 @@ class Renderer {
 // The options of a frame: `options` with the frame's lighting and exposure.
 ProductOptions frame_options(const ProductOptions& options, const FrameInputs& inputs);
 
+// `shadow` while the sun's centre is below the horizon (time_integral.h's
+// sun_above_horizon, where its DNI is 0): 0 on every valid texel, NaN on nodata. Rays
+// that leave the grid see no terrain, so the sun march alone would let a sun below the
+// horizontal light the edges. nullopt when the frame is not such a one.
+std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inputs, const terrain::HeightField& field);
+
 // Whether two option sets give the same horizons, hence the same visibility: every
 // field that reaches the march, the sweep or the visibility's SH (not the lighting,
 // exposure, albedo or threads).

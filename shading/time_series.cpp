@@ -301,4 +301,14 @@ TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Ob
   return out;
 }
 
+std::string format_instant(sun::UtcTime t) {
+  const double whole = std::floor(t.unix_seconds);
+  const int millis = static_cast<int>(std::lround((t.unix_seconds - whole) * 1000.0));
+  if (millis == 0 || millis == 1000) return sun::format_utc_time(t);
+  std::string text = sun::format_utc_time({whole});
+  char fraction[8];
+  std::snprintf(fraction, sizeof fraction, ".%03d", millis);
+  return text.insert(text.size() - 1, fraction);
+}
+
 }  // namespace skylit::shading

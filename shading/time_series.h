@@ -75,6 +75,10 @@ struct TimeSeries {
   std::string note;                    // one line when a date has no sunrise/sunset
 };
 
+// ISO 8601 of an instant, to the millisecond where it is not a whole second (a date's
+// sunrise and disc events fall between seconds): what parse_utc_time reads back.
+std::string format_instant(sun::UtcTime t);
+
 // The instants of `spec`; a date needs `place` (e.g. the DEM's centre), else throws
 // std::invalid_argument.
 TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Observer>& place);

@@ -1,12 +1,15 @@
 // Daily sums through the whole chain a time series runs: a date resolved at a place
-// (time_series.h) → each frame's sun and sky (resolve_lighting) → the CPU reference
-// products (compute_product: irradiance, shadow) → trapezoid weights (time_integral.h).
+// (time_series.h) → each frame's sun and sky (resolve_lighting) → frames of the CPU
+// reference renderer (irradiance, shadow) → their sum (summed_products.h: trapezoid
+// weights, time_integral.h).
 // Checked against independent derivations: the same clear-sky model summed over the
 // day by Simpson's rule on the solar path, and a wall's shadow against geometry.
 #include "horizon_scenes.h"
 
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/reference_renderer.h"
+#include "shading/summed_products.h"
 #include "shading/sun_position.h"
 #include "shading/time_integral.h"
 #include "shading/time_series.h"
@@ -27,26 +30,27 @@ constexpr double kDeg = kPi / 180.0;
 const sun::Observer kEquator{0.0, 0.0, 0.0};
 constexpr const char* kEquinox = "2026-03-20";
 
-// ISO 8601 to the millisecond: the disc events fall between whole seconds.
-std::string iso(sun::UtcTime t) {
-  const double whole = std::floor(t.unix_seconds);
-  std::string text = sun::format_utc_time({whole});
-  char fraction[8];
-  std::snprintf(fraction, sizeof fraction, ".%03d", static_cast<int>((t.unix_seconds - whole) * 1000.0));
-  return text.insert(text.size() - 1, fraction);
-}
-
 ResolvedLighting lighting_at(sun::UtcTime t) {
   LightingRequest r;
-  r.time = iso(t);
+  r.time = format_instant(t);
   return resolve_lighting(r, kEquator);
 }
 
-ProductOptions lit(const ResolvedLighting& l) {
+// The frames of `ts` summed as `-p insolation|sun-hours` sums them.
+ProductBands daily_sum(const terrain::HeightField& field, SummedProduct product, const TimeSeries& ts) {
   ProductOptions o;
   o.march.curvature.enabled = false;
-  o.lighting = l.lighting;
-  return o;
+  ReferenceRenderer renderer;
+  renderer.set_field(field);
+  renderer.set_options(o);
+  renderer.expect_frames(static_cast<int>(ts.instants.size()));
+  SeriesSum sum(product, ts.instants, field.width, field.height);
+  for (std::size_t k = 0; k < ts.instants.size(); ++k) {
+    const ResolvedLighting l = lighting_at(ts.instants[k]);
+    if (sum.needs_frame(static_cast<int>(k), l.lighting))
+      sum.add(static_cast<int>(k), renderer.frame(frame_product(product), {l.lighting, {}, std::nullopt}));
+  }
+  return sum.result(field.valid);
 }
 
 // Apparent elevation (rad) of the sun's centre at the equator.
@@ -82,16 +86,13 @@ TEST(DailySums, FlatOpenGroundInsolationIsTheClearSkyModelsDailySum) {
 
   const auto field = test::make_field(9, 9, 30.0);
   const TimeSeries ts = resolve_time_series(parse_time_spec(kEquinox), kEquator);
-  const auto w = trapezoid_weights_hours(ts.instants);
-  double chain_wh = 0.0;
-  for (std::size_t k = 0; k < w.size(); ++k)
-    chain_wh += w[k] * compute_product(field, Product::Irradiance, lit(lighting_at(ts.instants[k]))).at(0, 4, 4);
+  const double chain_wh = daily_sum(field, SummedProduct::Insolation, ts).at(0, 4, 4);
   // Tolerance 0.1 %: the default step errs by 0.003 % here (docs/time-step.md); the
   // twilight before sunrise and after sunset, outside the frames, is ≈ 2 × D(0) × 4 min
   // ≈ 1.6 Wh/m² (0.02 %); the product's order-4 uniform sky on flat ground is exact to
   // float precision (lighting_test: 0.5 W/m² of 1000).
   EXPECT_NEAR(chain_wh, reference_wh, 1e-3 * reference_wh);
-  std::printf("daily insolation: chain %.2f Wh/m² at %zu frames, Simpson %.2f Wh/m²\n", chain_wh, w.size(),
+  std::printf("daily insolation: chain %.2f Wh/m² at %zu frames, Simpson %.2f Wh/m²\n", chain_wh, ts.instants.size(),
               reference_wh);
 }
 
@@ -114,14 +115,9 @@ std::vector<double> wall_sun_hours_chain(const terrain::HeightField& f, const st
   TimeSeriesOptions o;
   o.day_step_seconds = step_s;
   const TimeSeries ts = resolve_time_series(parse_time_spec(kEquinox, o), kEquator);
-  const auto w = trapezoid_weights_hours(ts.instants);
-  std::vector<double> hours(cases.size(), 0.0);
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    const ResolvedLighting l = lighting_at(ts.instants[k]);
-    if (!sun_above_horizon(l.lighting.sun)) continue;
-    const ProductBands b = compute_product(f, Product::Shadow, lit(l));
-    for (std::size_t c = 0; c < cases.size(); ++c) hours[c] += w[k] * b.at(0, cases[c].column, f.height / 2);
-  }
+  const ProductBands sum = daily_sum(f, SummedProduct::SunHours, ts);
+  std::vector<double> hours;
+  for (const WallCase& c : cases) hours.push_back(sum.at(0, c.column, f.height / 2));
   return hours;
 }
 

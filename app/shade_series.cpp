@@ -80,13 +80,13 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
     for (const std::string& path : written) std::filesystem::remove(path, ec);
     throw;
   }
+  if (job.timings) print_frame_times(frame_ms);
   if (job.quiet) return;
   std::cerr << "skylit: computed " << frame_ms.size() << " frame" << (frame_ms.size() == 1 ? "" : "s") << " on "
             << renderer.description() << "\n";
   if (night > 0)
     std::cerr << "skylit: note: the sun is below the horizon at " << night << " of " << n << " times ("
               << (job.product == shading::Product::Shadow ? "shadow 0 there" : "sky light only there") << ")\n";
-  if (job.timings) print_frame_times(frame_ms);
   if (job.outputs.per_frame)
     std::cerr << "skylit: wrote " << n << " files, " << job.outputs.files.front().path << " … "
               << job.outputs.files.back().path << "\n";

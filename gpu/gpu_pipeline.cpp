@@ -385,6 +385,7 @@ struct GpuProductPipeline::Impl {
   int vis_rows = 0;
   int frames = 0;  // compute() calls since the visibility was last dropped
   double compile_ms = 0.0;  // kernels compiled since the last compute() began
+  Buffer device_out;        // compute_on_gpu's bands
   // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
   // (SUN_SWEPT). Compiled at first use.
   std::optional<ComputeProgram> sun[2];
@@ -630,6 +631,24 @@ std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
 shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& field,
                                                   const shading::ProgressCallback& progress,
                                                   GpuPipelineTimings* timings) const {
+  return run(field, progress, timings, false);
+}
+
+const Buffer& GpuProductPipeline::compute_on_gpu(const terrain::HeightField& field,
+                                                 const shading::ProgressCallback& progress,
+                                                 GpuPipelineTimings* timings) const {
+  run(field, progress, timings, true);
+  return mImpl->device_out;
+}
+
+double GpuProductPipeline::display_scale() const {
+  if (mProduct != Product::Shaded) return 1.0;
+  if (shading::uses_lighting(mProduct, mOptions)) return mImpl->display_per_irradiance;
+  return mOptions.shaded.albedo * mOptions.shaded.exposure;
+}
+
+shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field, const shading::ProgressCallback& progress,
+                                              GpuPipelineTimings* timings, bool on_gpu) const {
   if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
   const auto start = Clock::now();
   GpuPipelineTimings t;
@@ -641,6 +660,7 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   const std::size_t texels = field.size();
 
   if (auto night = shading::night_shadow(mProduct, {mOptions.lighting, {}, std::nullopt}, field)) {
+    if (on_gpu) k.device_out = Buffer::from(std::span<const float>(night->data));
     if (progress) progress(1.0);
     t.frame_ms = ms_since(start);
     if (timings) *timings = t;
@@ -655,8 +675,13 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     t.upload_ms = ms_since(upload_start);
     Buffer shadow;
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
-    shading::ProductBands out{w, h, 1, std::vector<float>(texels), {std::string(shading::product_name(mProduct))}};
-    shadow.download(out.data.data(), texels * sizeof(float));
+    shading::ProductBands out{w, h, 1, {}, {std::string(shading::product_name(mProduct))}};
+    if (on_gpu) {
+      k.device_out = std::move(shadow);
+    } else {
+      out.data.resize(texels);
+      shadow.download(out.data.data(), texels * sizeof(float));
+    }
     throw_on_gl_error("GpuProductPipeline::compute (shadow)");
     if (progress) progress(1.0);
     t.compile_ms = k.compile_ms;
@@ -852,7 +877,15 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
     march->set_uniform("coarse_chunk_rows", coarse_chunk_rows);
   }
 
-  shading::ProductBands out{w, h, out_bands, std::vector<float>(texels * out_bands), {}};
+  shading::ProductBands out{w, h, out_bands, {}, {}};
+  if (on_gpu) {
+    if (k.device_out.size_bytes() != texels * out_bands * sizeof(float)) {
+      k.device_out = Buffer();
+      k.device_out = Buffer(texels * out_bands * sizeof(float));
+    }
+  } else {
+    out.data.resize(texels * out_bands);
+  }
   std::vector<float> chunk_values;
   GpuTimer march_timer, products_timer;
   for (int r0 = 0; r0 < h; r0 += chunk) {
@@ -886,12 +919,20 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
       products.dispatch_covering(w, rows);
     }
     t.products_ms += products_timer.elapsed_ms();
-    // Band-major chunk → band-major field.
-    chunk_values.resize(static_cast<std::size_t>(chunk) * w * out_bands);
-    output.download(chunk_values.data(), chunk_values.size() * sizeof(float));
-    for (int b = 0; b < out_bands; ++b)
-      std::copy_n(chunk_values.begin() + static_cast<std::ptrdiff_t>(b) * chunk * w, static_cast<std::size_t>(rows) * w,
-                  out.data.begin() + (static_cast<std::ptrdiff_t>(b) * h + r0) * w);
+    // Band-major chunk → band-major field, on the GPU or the host.
+    if (on_gpu) {
+      const std::size_t row_bytes = static_cast<std::size_t>(w) * sizeof(float);
+      for (int b = 0; b < out_bands; ++b)
+        glCopyNamedBufferSubData(output.id(), k.device_out.id(), static_cast<GLintptr>(b * chunk * row_bytes),
+                                 static_cast<GLintptr>((static_cast<std::size_t>(b) * h + r0) * row_bytes),
+                                 static_cast<GLsizeiptr>(rows * row_bytes));
+    } else {
+      chunk_values.resize(static_cast<std::size_t>(chunk) * w * out_bands);
+      output.download(chunk_values.data(), chunk_values.size() * sizeof(float));
+      for (int b = 0; b < out_bands; ++b)
+        std::copy_n(chunk_values.begin() + static_cast<std::ptrdiff_t>(b) * chunk * w,
+                    static_cast<std::size_t>(rows) * w, out.data.begin() + (static_cast<std::ptrdiff_t>(b) * h + r0) * w);
+    }
     if (progress) progress(0.99 * (r0 + rows) / h);
   }
 
@@ -902,9 +943,10 @@ shading::ProductBands GpuProductPipeline::compute(const terrain::HeightField& fi
   else
     out.band_names.emplace_back(shading::product_name(mProduct));
   const bool lit = shading::uses_lighting(mProduct, mOptions);
-  if (mProduct == Product::Shaded && lit) {
+  if (mProduct == Product::Shaded && lit && k.channels == 3) out.band_names = {"red", "green", "blue"};
+  if (on_gpu) {  // linear values: display_scale() says how to tone-map them
+  } else if (mProduct == Product::Shaded && lit) {
     // The tone map of lighting.h, on the host with the reference's own function.
-    if (k.channels == 3) out.band_names = {"red", "green", "blue"};
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::srgb_code_value(static_cast<double>(v) * k.display_per_irradiance);
   } else if (mProduct == Product::Shaded) {

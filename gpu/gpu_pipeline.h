@@ -34,6 +34,7 @@
 #include <memory>
 #include <vector>
 
+#include "gpu/buffers.h"
 #include "shading/products.h"
 #include "shading/renderer.h"
 #include "terrain/height_field.h"
@@ -95,12 +96,21 @@ class GpuProductPipeline {
   shading::ProductBands compute(const terrain::HeightField& field, const shading::ProgressCallback& progress = {},
                                 GpuPipelineTimings* timings = nullptr) const;
 
+  // compute(), with the bands left on the GPU: band-major float32 [(b·height + j)·width + i],
+  // NaN on nodata, valid until the next call. `shaded` holds linear values there, before
+  // the host's tone map: srgb_code_value(v · display_scale()) gives compute()'s codes.
+  const Buffer& compute_on_gpu(const terrain::HeightField& field, const shading::ProgressCallback& progress = {},
+                               GpuPipelineTimings* timings = nullptr) const;
+  double display_scale() const;
+
   // Diagnostics: the sweep's far-slope codes (shading::sweep_far_slopes' layout, one
   // field-sized layer per band, band-major) as the last compute() left them; empty if it
   // did not sweep. Tests compare them with the reference's codes.
   std::vector<std::uint16_t> far_codes() const;
 
  private:
+  shading::ProductBands run(const terrain::HeightField& field, const shading::ProgressCallback& progress,
+                            GpuPipelineTimings* timings, bool on_gpu) const;
   struct Impl;
   shading::Product mProduct;
   shading::ProductOptions mOptions;

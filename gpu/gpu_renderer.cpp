@@ -82,6 +82,23 @@ GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::Pr
   return *cache_.back().pipeline;
 }
 
+GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::ProductOptions& options) {
+  context_->make_current();
+  GpuProductPipeline& pipeline = pipeline_for(product, options);  // its construction compiles
+  last_ = &pipeline;
+  if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
+  pipeline.set_exposure(options.shaded.exposure);
+  pipeline.keep_visibility(keep_);
+  return pipeline;
+}
+
+void GpuRenderer::finish_frame(std::chrono::steady_clock::time_point start) {
+  if (!context_reported_) timings_.context_ms = context_ms_;
+  context_reported_ = true;
+  ++frames_;
+  timings_.frame_ms = ms_since(start);
+}
+
 shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameInputs& inputs,
                                          const shading::ProgressCallback& progress) {
   if (!field_) throw std::logic_error("GpuRenderer::frame: no field (set_field)");
@@ -97,22 +114,31 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
     timings_.horizons_reused = true;
     if (progress) progress(1.0);
   } else {
-    context_->make_current();
-    GpuProductPipeline& pipeline = pipeline_for(product, options);  // its construction compiles
+    GpuProductPipeline& pipeline = prepare(product, options);
     const double construction_ms = timings_.compile_ms;
-    last_ = &pipeline;
-    if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
-    pipeline.set_exposure(options.shaded.exposure);
-    pipeline.keep_visibility(keep_);
     out = pipeline.compute(*field_, progress, &timings_);
     timings_.compile_ms += construction_ms;
     if (independent && (keep_ || frames_ > 0)) outputs_.store(product, *field_, options, out);
   }
-  if (!context_reported_) timings_.context_ms = context_ms_;
-  context_reported_ = true;
-  ++frames_;
-  timings_.frame_ms = ms_since(start);
+  finish_frame(start);
   return out;
+}
+
+GpuFrame GpuRenderer::frame_on_gpu(Product product, const shading::FrameInputs& inputs,
+                                   const shading::ProgressCallback& progress) {
+  if (!field_) throw std::logic_error("GpuRenderer::frame_on_gpu: no field (set_field)");
+  shading::validate(inputs);
+  const shading::ProductOptions options = shading::frame_options(options_, inputs);
+  if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
+  const auto start = std::chrono::steady_clock::now();
+  timings_ = {};
+  GpuProductPipeline& pipeline = prepare(product, options);
+  const double construction_ms = timings_.compile_ms;
+  const Buffer& bands = pipeline.compute_on_gpu(*field_, progress, &timings_);
+  timings_.compile_ms += construction_ms;
+  finish_frame(start);
+  const int band_count = static_cast<int>(bands.size_bytes() / (field_->size() * sizeof(float)));
+  return {bands, field_->width, field_->height, band_count, pipeline.display_scale()};
 }
 
 }  // namespace skylit::gpu

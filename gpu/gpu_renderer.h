@@ -10,10 +10,20 @@
 #include "gpu/gpu_pipeline.h"
 #include "shading/renderer.h"
 
+#include <chrono>
 #include <deque>
 #include <memory>
 
 namespace skylit::gpu {
+
+// A frame left on the GPU (the viewer draws it without a copy): band-major float32
+// [(b·height + j)·width + i], NaN on nodata; `shaded` in linear values, shown as
+// shading::srgb_code_value(v · display_scale). Valid until the renderer's next frame.
+struct GpuFrame {
+  const Buffer& bands;
+  int width = 0, height = 0, band_count = 0;
+  double display_scale = 1.0;
+};
 
 class GpuRenderer final : public shading::Renderer {
  public:
@@ -31,6 +41,9 @@ class GpuRenderer final : public shading::Renderer {
   shading::ProductBands frame(shading::Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress = {}) override;
   const shading::FrameTimings& last_timings() const override { return timings_; }
+  // frame(), with the bands left on the GPU (no read-back).
+  GpuFrame frame_on_gpu(shading::Product product, const shading::FrameInputs& inputs,
+                        const shading::ProgressCallback& progress = {});
 
   const HeadlessContext& context() const { return *context_; }
   // The pipeline of the last frame (diagnostics: GpuProductPipeline::far_codes), or null.
@@ -45,6 +58,8 @@ class GpuRenderer final : public shading::Renderer {
   // Each pipeline holds its own copy of the field on the GPU: a few settings at most.
   static constexpr std::size_t kCachedPipelines = 4;
   GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options);
+  GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options);
+  void finish_frame(std::chrono::steady_clock::time_point start);
 
   std::unique_ptr<HeadlessContext> context_;  // declared first: destroyed last
   double context_ms_ = 0.0;

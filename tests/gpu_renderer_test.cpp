@@ -168,5 +168,32 @@ TEST_F(GpuRendererTest, AutoTakesTheReferenceWhereTheGpuLacksTheProduct) {
   EXPECT_TRUE(gpu->lacks(Product::Shadow, shading::frame_options(o, {lighting_at(200, 15), {}, std::nullopt})));
 }
 
+// Frames left on the GPU hold what frame() reads back: the same floats, and for
+// `shaded` the linear values its tone map turns into the same codes.
+TEST_F(GpuRendererTest, FramesOnTheGpuHoldWhatFrameReadsBack) {
+  const terrain::HeightField f = testing::synthetic_field();
+  GpuRenderer r;
+  r.set_field(f);
+  r.set_options(small_options());
+  r.expect_frames(2);
+  const Lighting sun = lighting_at(225, 30, "preetham");
+  for (Product p : {Product::Skyview, Product::Shadow, Product::Irradiance, Product::Shaded}) {
+    const ProductBands host = r.frame(p, {sun, {}, std::nullopt});
+    const GpuFrame device = r.frame_on_gpu(p, {sun, {}, std::nullopt});
+    ASSERT_EQ(device.band_count, host.bands) << shading::product_name(p);
+    ASSERT_EQ(device.width, host.width);
+    const std::vector<float> values = device.bands.download_all<float>();
+    ASSERT_EQ(values.size(), host.data.size());
+    for (std::size_t t = 0; t < values.size(); ++t) {
+      if (std::isnan(host.data[t])) {
+        EXPECT_TRUE(std::isnan(values[t])) << shading::product_name(p) << " " << t;
+        continue;
+      }
+      const float v = p == Product::Shaded ? shading::srgb_code_value(values[t] * device.display_scale) : values[t];
+      ASSERT_EQ(v, host.data[t]) << shading::product_name(p) << " texel " << t;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace skylit::gpu

@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Installs every system dependency of skylit from Debian 12 packages.
 # Idempotent: packages already present are skipped; uses sudo when not root.
+# --upgrade also brings the installed ones up to the current Debian 12 update, as a
+# fresh install would get them (.ci/run: CI tests what users install, not the image's
+# older packages).
+# Usage: scripts/setup.sh [--upgrade]
 set -euo pipefail
 
 PACKAGES=(
@@ -10,19 +14,44 @@ PACKAGES=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
 )
+upgrade=false
+case "${1:-}" in
+  "") ;;
+  --upgrade) upgrade=true ;;
+  *) echo "usage: $0 [--upgrade]" >&2; exit 2 ;;
+esac
 
+# "name version" of each listed package that is installed.
+installed() {
+  dpkg-query -W -f='${Package} ${Version} ${Status}\n' "${PACKAGES[@]}" 2>/dev/null |
+    awk '$NF == "installed" { print $1, $2 }'
+}
+
+before=$(installed)
 missing=()
 for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  grep -q "^$p " <<<"$before" || missing+=("$p")
 done
-if [ ${#missing[@]} -eq 0 ]; then
+if [ ${#missing[@]} -eq 0 ] && ! $upgrade; then
   echo "setup: all ${#PACKAGES[@]} packages already installed"
   exit 0
 fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+if $upgrade; then
+  $SUDO apt-get install -y -qq --only-upgrade "${PACKAGES[@]}" >/dev/null
+  changed=$(join <(sort <<<"$before") <(installed | sort) | awk '$2 != $3 { print $1, $2, "->", $3 }')
+  if [ -n "$changed" ]; then
+    echo "setup: upgraded:"
+    echo "$changed" | sed 's/^/  /'
+  else
+    echo "setup: all ${#PACKAGES[@]} packages up to date"
+  fi
+fi

@@ -2,7 +2,8 @@
 // backend writes the same products as the reference (tolerances of
 // gpu_products_test), `auto` is the default and falls back to the reference where no
 // GL 4.5 context exists, and `--backend gpu` without one fails with one clear line.
-// Skipped when the skylit binary is not built or no context can be created.
+// Skipped when the skylit binary is not built or no context can be created (failed
+// for want of a context under SKYLIT_REQUIRE_GPU=1).
 #include <gtest/gtest.h>
 
 #include <gdal.h>
@@ -17,6 +18,7 @@
 
 #include "cli_test_util.h"
 #include "gpu/gl_context.h"
+#include "gpu_test_util.h"
 
 namespace skylit::gpu {
 namespace {
@@ -28,11 +30,8 @@ class GpuBackendTest : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!fs::exists(SKYLIT_BINARY)) GTEST_SKIP() << "skylit binary not built: " << SKYLIT_BINARY;
-    try {
-      HeadlessContext probe;
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
+    std::unique_ptr<HeadlessContext> probe;
+    SKYLIT_CONTEXT_OR_SKIP(probe);
     dir = fs::temp_directory_path() / ("skylit_gpu_backend_" + std::to_string(::getpid()));
     fs::create_directories(dir);
   }

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -123,6 +125,26 @@ TEST_F(GpuContextTest, ContextsOnTheSameDisplayOutliveEachOther) {
   context->make_current();
   Buffer b(16);
   EXPECT_NO_THROW(throw_on_gl_error("after a second context came and went"));
+}
+
+// Paths of the shared objects mapped now, read from /proc/self/maps (not the loader's
+// list that gl_context.cpp pins by).
+std::set<std::string> mapped_objects() {
+  std::ifstream maps("/proc/self/maps");
+  std::set<std::string> paths;
+  for (std::string line; std::getline(maps, line);)
+    if (const auto slash = line.find('/'); slash != std::string::npos && line.find(".so", slash) != std::string::npos)
+      paths.insert(line.substr(slash));
+  return paths;
+}
+
+// eglTerminate would unload the driver with the last context; it stays, so LeakSanitizer
+// still sees the globals that hold the driver's once-only allocations.
+TEST_F(GpuContextTest, DriverStaysLoadedAfterTheLastContext) {
+  const std::set<std::string> with_context = mapped_objects();
+  context.reset();
+  const std::set<std::string> without = mapped_objects();
+  for (const std::string& path : with_context) EXPECT_TRUE(without.contains(path)) << path << " was unloaded";
 }
 
 TEST_F(GpuContextTest, CompileErrorCarriesInfoLogAndSourceNames) {

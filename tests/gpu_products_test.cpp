@@ -261,25 +261,30 @@ TEST_F(GpuProductsTest, SweepBeyondTheTextureLimitFailsClearly) {
   }
 }
 
-// The march's other settings: plain max, no pyramid (bilinear level 0), bilinear
-// pyramid levels, no curvature, a max distance, k_v = 2, and the shaded product at n = 3, N = 6, W = 12 with an
-// albedo and exposure.
+// The march (asked for: the sweep is the default) in its settings: bilinear levels and the
+// plain max (its defaults) with k_v = 2 and no curvature, no pyramid (bilinear level 0)
+// with a max distance, NS09's B-spline levels and smooth max alone and together; then
+// the shaded product at n = 3, N = 6, W = 12 with an albedo and exposure.
 TEST_F(GpuProductsTest, MarchAndShadingVariants) {
   const HeightField field = synthetic_scene(72, 64, 11);
-  ProductOptions o = default_options();
-  o.march.smooth_max = false;
+  ProductOptions march = default_options();
+  march.march.method = shading::HorizonMethod::March;
+  ProductOptions o = march;
   o.march.curvature.enabled = false;
   o.march.k_v = 2;
-  expect_product_matches(field, Product::Horizon, o, "plain max, k_v 2, flat Earth");
-  o = default_options();
+  expect_product_matches(field, Product::Horizon, o, "march, k_v 2, flat Earth");
+  o = march;
   o.march.use_pyramid = false;
   o.march.max_distance_m = 1000.0;  // not 900 m: see the header comment
   expect_product_matches(field, Product::Skyview, o, "no pyramid, D 1000 m");
-  o = default_options();
-  o.march.level_interpolation = terrain::Interpolation::Bilinear;
-  expect_product_matches(field, Product::Horizon, o, "bilinear levels");
-  o.march.smooth_max = false;
-  expect_product_matches(field, Product::Svf, o, "bilinear levels, plain max");
+  o = march;
+  o.march.level_interpolation = terrain::Interpolation::CubicBSpline;
+  expect_product_matches(field, Product::Horizon, o, "B-spline levels");
+  o.march.smooth_max = true;
+  expect_product_matches(field, Product::Svf, o, "B-spline levels, smooth max");
+  o = march;
+  o.march.smooth_max = true;
+  expect_product_matches(field, Product::Horizon, o, "bilinear levels, smooth max");
   o = default_options();
   o.march.azimuths = 12;
   o.shaded.sh_order = 3;

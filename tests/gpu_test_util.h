@@ -1,6 +1,7 @@
 // Shared fixtures of the GPU tests: a headless GL 4.5 context per test (skipped, with
-// the reason, only where EGL cannot give one — CI's llvmpipe does), and the two height
-// fields the GPU-vs-reference comparisons run on.
+// the reason, only where EGL cannot give one — CI's llvmpipe does — and failed there
+// under SKYLIT_REQUIRE_GPU=1), and the two height fields the GPU-vs-reference
+// comparisons run on.
 #pragma once
 
 #include "gpu/gl_context.h"
@@ -11,22 +12,47 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace skylit::gpu::testing {
 
+// SKYLIT_REQUIRE_GPU=1 (.ci/run sets it): a machine that cannot make a context fails the
+// tests that need one, instead of passing them as skipped.
+inline bool gpu_required() {
+  const char* v = std::getenv("SKYLIT_REQUIRE_GPU");
+  return v && std::string_view(v) == "1";
+}
+
+// A new context, or null with `why` set.
+inline std::unique_ptr<HeadlessContext> try_context(std::string& why) {
+  try {
+    return std::make_unique<HeadlessContext>();
+  } catch (const std::exception& e) {
+    why = e.what();
+    return nullptr;
+  }
+}
+
+// Sets `ptr` (a std::unique_ptr<HeadlessContext>) to a new context, or ends the test:
+// skipped with the reason, failed under SKYLIT_REQUIRE_GPU=1. In a test body or SetUp.
+#define SKYLIT_CONTEXT_OR_SKIP(ptr)                                                                   \
+  do {                                                                                                \
+    std::string skylit_why_;                                                                          \
+    (ptr) = ::skylit::gpu::testing::try_context(skylit_why_);                                         \
+    if (!(ptr)) {                                                                                     \
+      if (::skylit::gpu::testing::gpu_required()) FAIL() << "SKYLIT_REQUIRE_GPU=1: " << skylit_why_; \
+      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << skylit_why_;           \
+    }                                                                                                 \
+  } while (0)
+
 class GpuTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    try {
-      context = std::make_unique<HeadlessContext>();
-    } catch (const std::exception& e) {
-      GTEST_SKIP() << "no OpenGL 4.5 context through EGL on this machine: " << e.what();
-    }
-  }
+  void SetUp() override { SKYLIT_CONTEXT_OR_SKIP(context); }
   std::unique_ptr<HeadlessContext> context;
 };
 

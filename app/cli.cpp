@@ -1,5 +1,5 @@
 #include "app/commands.h"
-#include "app/gdal_style_args.h"
+#include "app/common/gdal_style_args.h"
 
 #include <algorithm>
 #include <exception>

@@ -3,12 +3,12 @@
 // the projected crops) against the exact ground truth (dense half-texel march, 360
 // azimuths) for the svf and skyview products on crops of real DEMs in shared/dem.
 // Usage: accuracy_report [stride]  (truth at every stride-th texel, default 2).
-#include "shading/azimuth.h"
-#include "shading/horizon_exact.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
-#include "shading/horizon_sweep.h"
-#include "shading/surface_normals.h"
 #include "terrain/dem_reader.h"
 
 #include <chrono>

@@ -2,12 +2,12 @@
 // vs T1 = pointwise exp* vs T0 = projection of the true visibility, for sphere
 // scenes (1–400 spheres, random in a cone or coincident), ε, guards, bases,
 // thresholds, height-field vectors, and float32 vs double. Usage: exp_report [order]
-#include "shading/hyb_table.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_rotation.h"
-#include "shading/sphere_blocker.h"
+#include "shading/blockers/sphere_blocker.h"
+#include "shading/sh/hyb_table.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_rotation.h"
+#include "shading/sh/wedge.h"
 #include "shading/visibility_truth.h"
-#include "shading/wedge.h"
 
 #include <glm/geometric.hpp>
 
@@ -46,7 +46,7 @@ double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) *
 
 struct Scene {
   std::string name;
-  std::vector<sh::Sphere> spheres;
+  std::vector<blockers::Sphere> spheres;
   sh::Vec t0;  // projection of the true visibility (independent of ε)
 };
 
@@ -66,23 +66,23 @@ Scene make_scene(int count, bool coincident, std::uint64_t seed) {
     const double rz = std::sqrt(1 - cz * cz), d = 1.5 + 4.5 * uniform(rng), ratio = 0.15 + 0.45 * uniform(rng);
     s.spheres.push_back({d * glm::dvec3(rz * std::cos(phi), rz * std::sin(phi), cz), ratio * d});
   }
-  truth::Occluders occ;
+  shading::Occluders occ;
   for (const auto& sp : s.spheres) {
     const double d = glm::length(sp.centre);
     occ.caps.push_back({sp.centre / d, std::asin(std::min(1.0, sp.radius / d))});
     if (coincident) break;
   }
-  s.t0 = truth::project_visibility(g_order, occ, {4096, 16, {}});
+  s.t0 = shading::project_visibility(g_order, occ, {4096, 16, {}});
   return s;
 }
 
 sh::Vec log_vector(const Scene& s, double eps, bool ratio) {
-  sh::BlockerOptions bo;
+  blockers::BlockerOptions bo;
   bo.epsilon = eps;
   bo.ratio_attenuation = ratio;
   bo.cull_error = 0;
   sh::Vec f(sh::num_coeffs(g_order), 0.0);
-  sh::accumulate_log_visibility(s.spheres, kOrigin, kUp, bo, f);
+  blockers::accumulate_log_visibility(s.spheres, kOrigin, kUp, bo, f);
   return f;
 }
 
@@ -254,14 +254,14 @@ void height_field_table() {
     return s;
   }();
   for (bool with_spheres : {false, true}) {
-    truth::Occluders occ;
+    shading::Occluders occ;
     occ.horizon = sigma_of;
     if (with_spheres)
       for (const auto& sp : spheres.spheres) {
         const double d = glm::length(sp.centre);
         occ.caps.push_back({sp.centre / d, std::asin(sp.radius / d)});
       }
-    const sh::Vec t0 = truth::project_visibility(g_order, occ, {4096, 16, {}});
+    const sh::Vec t0 = shading::project_visibility(g_order, occ, {4096, 16, {}});
     for (double eps : {0.01, 0.1, 0.2, 0.5}) {
       sh::Vec f = sh::log_visibility_from_horizon(op, sigma, std::log(eps));
       if (with_spheres) {

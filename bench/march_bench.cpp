@@ -15,17 +15,17 @@
 //    across thread counts and stay meaningful when the machine is loaded. The default
 //    march (method march), W = 32 (exact: W = ExactOptions::sky_azimuths = 360).
 //  * BM_ComputeProductSweep: the same products with the horizon sweep (2 threads).
-//  * BM_SweepFarSlopes: shading::sweep_far_slopes for one heading, one thread.
+//  * BM_SweepFarSlopes: horizon::sweep_far_slopes for one heading, one thread.
 //  * BM_ComputeProductExact: the same with exact = true on a small 64² scene (the dense
 //    ground truth costs more per texel·azimuth and uses 360 azimuths), next to the
 //    default march on the same scene.
 //
 // Whole run ≈ 1.5–2 min on 2 idle cores: build/bin/march_bench
 // Kernels only:                       build/bin/march_bench --benchmark_filter=Elevation
-#include "shading/azimuth.h"
-#include "shading/horizon_exact.h"
-#include "shading/horizon_march.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_march.h"
+#include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
 #include "terrain/height_field.h"
 #include "terrain/pyramid.h"

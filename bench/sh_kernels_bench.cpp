@@ -13,13 +13,13 @@
 // Each benchmark processes one call per iteration: the reported time is ns per call.
 // Run all (≈ 1–2 min on 2 cores): build/bin/sh_kernels_bench
 // One family:                       build/bin/sh_kernels_bench --benchmark_filter=ExpHyb
-#include "shading/nlp.h"
-#include "shading/sh_basis.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
-#include "shading/sh_rotation.h"
-#include "shading/sphere_blocker.h"
-#include "shading/wedge.h"
+#include "shading/blockers/sphere_blocker.h"
+#include "shading/sh/nlp.h"
+#include "shading/sh/sh_basis.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
+#include "shading/sh/sh_rotation.h"
+#include "shading/sh/wedge.h"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
@@ -41,9 +41,9 @@ const glm::dvec3 kUp{0.0, 0.0, 1.0};
 double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
 
 // Same distribution as bench/exp_report.cpp (math-notes §6.3).
-std::vector<sh::Sphere> make_spheres(int count, std::uint64_t seed = 1000) {
+std::vector<blockers::Sphere> make_spheres(int count, std::uint64_t seed = 1000) {
   std::mt19937_64 rng(seed + static_cast<std::uint64_t>(count));
-  std::vector<sh::Sphere> spheres;
+  std::vector<blockers::Sphere> spheres;
   const double cone = 35.0 * kPi / 180;
   for (int i = 0; i < count; ++i) {
     const double cz = 1 - uniform(rng) * (1 - std::cos(cone)), phi = 2 * kPi * uniform(rng);
@@ -55,7 +55,7 @@ std::vector<sh::Sphere> make_spheres(int count, std::uint64_t seed = 1000) {
 
 sh::Vec log_vector(int order, int count) {
   sh::Vec f(sh::num_coeffs(order), 0.0);
-  sh::accumulate_log_visibility(make_spheres(count), kOrigin, kUp, sh::BlockerOptions{}, f);
+  blockers::accumulate_log_visibility(make_spheres(count), kOrigin, kUp, blockers::BlockerOptions{}, f);
   return f;
 }
 
@@ -112,12 +112,12 @@ BENCHMARK(BM_ExpHyb<double>)->Apply(ExpArgs)->MinTime(0.2);
 void BM_AccumulateLogVisibility(benchmark::State& state) {
   const int order = static_cast<int>(state.range(0));
   const auto spheres = make_spheres(static_cast<int>(state.range(1)));
-  const sh::BlockerOptions opt;
+  const blockers::BlockerOptions opt;
   sh::Vec f(sh::num_coeffs(order));
   int kept = 0;
   for (auto _ : state) {
     std::fill(f.begin(), f.end(), 0.0);
-    kept = sh::accumulate_log_visibility(spheres, kOrigin, kUp, opt, f);
+    kept = blockers::accumulate_log_visibility(spheres, kOrigin, kUp, opt, f);
     benchmark::DoNotOptimize(f.data());
     benchmark::ClobberMemory();
   }
@@ -133,13 +133,13 @@ BENCHMARK(BM_AccumulateLogVisibility)
 void BM_BlockerVisibilityOrder4(benchmark::State& state) {
   constexpr int kOrder = 4;
   const auto spheres = make_spheres(static_cast<int>(state.range(0)));
-  const sh::BlockerOptions bopt;
+  const blockers::BlockerOptions bopt;
   const sh::HybOptions hopt;
   sh::Vec f(sh::num_coeffs(kOrder));
   std::vector<float> ff(f.size()), out(f.size());
   for (auto _ : state) {
     std::fill(f.begin(), f.end(), 0.0);
-    sh::accumulate_log_visibility(spheres, kOrigin, kUp, bopt, f);
+    blockers::accumulate_log_visibility(spheres, kOrigin, kUp, bopt, f);
     for (std::size_t i = 0; i < f.size(); ++i) ff[i] = static_cast<float>(f[i]);
     sh::exp_hyb<float>(ff, out, hopt, nullptr);
     benchmark::DoNotOptimize(out.data());

@@ -3,19 +3,19 @@
 // (visibility_truth::integrate, exact in elevation per azimuth), for Lambert and
 // Phong r = 4, 16, with no occluder, a height-field horizon, and 1, 3, 10 spheres
 // over flat ground. Prints markdown. Usage: shading_report [azimuths]
+#include "shading/blockers/sphere_blocker.h"
 #include "shading/brdf.h"
-#include "shading/nlp.h"
-#include "shading/quadrature.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
-#include "shading/sh_rotation.h"
+#include "shading/sh/nlp.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
+#include "shading/sh/sh_rotation.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
+#include "shading/sky/sky_cie.h"
+#include "shading/sky/sky_sh.h"
 #include "shading/sky_brdf_table.h"
-#include "shading/sky_cie.h"
-#include "shading/sky_sh.h"
-#include "shading/sphere_blocker.h"
 #include "shading/visibility_truth.h"
-#include "shading/wedge.h"
 
 #include <glm/geometric.hpp>
 
@@ -46,7 +46,7 @@ double hf_horizon(double phi) {
 
 // Deterministic spheres (portable LCG): centres in a 25° cone about elevation
 // 60°, azimuth 40° (toward the test sun), d ∈ [1.5, 6], r/d ∈ [0.15, 0.6].
-std::vector<sh::Sphere> make_spheres(int count) {
+std::vector<blockers::Sphere> make_spheres(int count) {
   std::uint64_t state = 0x9e3779b97f4a7c15ULL;
   auto uniform = [&state]() {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -54,7 +54,7 @@ std::vector<sh::Sphere> make_spheres(int count) {
   };
   const glm::dvec3 axis = sh::direction(kPi / 2 - 60 * kPi / 180, 40 * kPi / 180);
   const glm::dvec3 e1 = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), axis)), e2 = glm::cross(axis, e1);
-  std::vector<sh::Sphere> out;
+  std::vector<blockers::Sphere> out;
   for (int k = 0; k < count; ++k) {
     const double cos_t = 1 - uniform() * (1 - std::cos(25 * kPi / 180)), phi = 2 * kPi * uniform();
     const double sin_t = std::sqrt(1 - cos_t * cos_t);
@@ -67,8 +67,8 @@ std::vector<sh::Sphere> make_spheres(int count) {
 
 struct Scene {
   std::string name;
-  truth::Occluders occ;             // the true binary visibility
-  std::vector<sh::Sphere> spheres;  // over flat ground (σ = 0) when non-empty
+  shading::Occluders occ;             // the true binary visibility
+  std::vector<blockers::Sphere> spheres;  // over flat ground (σ = 0) when non-empty
   bool height_field = false;
 };
 
@@ -83,9 +83,9 @@ sh::Vec pipeline_visibility(const Scene& s) {
   }
   if (s.spheres.empty()) return sh::constant_one(kOrder);
   sh::Vec logv(sh::num_coeffs(kOrder), 0.0);
-  sh::BlockerOptions opt;
+  blockers::BlockerOptions opt;
   opt.epsilon = 0.1;
-  sh::accumulate_log_visibility(s.spheres, {0, 0, 0}, {0, 0, 1}, opt, logv);
+  blockers::accumulate_log_visibility(s.spheres, {0, 0, 0}, {0, 0, 1}, opt, logv);
   const sh::Vec blockers = sh::exp_hyb(logv);
   // Ground: the cap {e > 0} as a ZH (√(2π)·NLP visibility at σ = 0), exact.
   const sh::Vec slice = sh::nlp_visibility(kOrder, 0.0);
@@ -103,9 +103,9 @@ sh::Vec log_visibility(const Scene& s, double eps) {
   if (s.height_field)
     for (int j = 0; j < 32; ++j) sigma[j] = hf_horizon(op.sample_azimuth(j));
   logv = sh::log_visibility_from_horizon(op, sigma, std::log(eps));
-  sh::BlockerOptions opt;
+  blockers::BlockerOptions opt;
   opt.epsilon = eps;
-  sh::accumulate_log_visibility(s.spheres, {0, 0, 0}, {0, 0, 1}, opt, logv);
+  blockers::accumulate_log_visibility(s.spheres, {0, 0, 0}, {0, 0, 1}, opt, logv);
   return logv;
 }
 
@@ -163,10 +163,10 @@ int main(int argc, char** argv) {
   std::vector<Sky> skies;
   {
     const shading::Radiance L = shading::test_sky_radiance;
-    skies.push_back({L, quad::project_smooth(kOrder, L, 64, 128), false});
+    skies.push_back({L, sh::project_smooth(kOrder, L, 64, 128), false});
     auto cie = std::make_shared<sky::CieSky>(12, shading::test_sky_sun(), sky::Rgb(1.0));
     const shading::Radiance Lc = [cie](const glm::dvec3& d) { return cie->relative_luminance(d); };
-    skies.push_back({Lc, quad::project(kOrder, sky::upper_hemisphere_rule(256, 512), Lc), true});
+    skies.push_back({Lc, sh::project(kOrder, sky::upper_hemisphere_rule(256, 512), Lc), true});
   }
 
   std::vector<Scene> scenes;
@@ -206,21 +206,21 @@ int main(int argc, char** argv) {
     const shading::SkyBrdfTable table_bl(kOrder, r, test_bl, grid);
 
     auto reference = [&](const Scene& s, const shading::Radiance& L, bool cut) {
-      truth::Occluders occ = s.occ;
+      shading::Occluders occ = s.occ;
       if (cut && !occ.horizon) occ.horizon = [](double) { return 0.0; };  // L = 0 below: same integral, no jump
-      truth::IntegrationOptions io;
+      shading::IntegrationOptions io;
       io.azimuths = g_azimuths;
       io.clamped_cosine_normal = a;
-      return truth::integrate(
+      return shading::integrate(
           occ, [&](const glm::dvec3& d) { return L(d) * shading::lobe_profile(r, glm::dot(d, a)); }, io);
     };
     const double open_test = reference(scenes[0], skies[0].full, skies[0].zero_below_horizon);
     const double open_cie = reference(scenes[0], skies[1].full, skies[1].zero_below_horizon);
 
     for (const Scene& s : scenes) {
-      truth::IntegrationOptions vo;
+      shading::IntegrationOptions vo;
       vo.azimuths = g_azimuths;
-      const sh::Vec v0 = truth::project_visibility(kOrder, s.occ, vo);
+      const sh::Vec v0 = shading::project_visibility(kOrder, s.occ, vo);
       const double ref_bl = reference(s, test_bl, false),
                    ref_test = reference(s, skies[0].full, skies[0].zero_below_horizon);
       const double ref_cie = reference(s, skies[1].full, skies[1].zero_below_horizon);

@@ -22,7 +22,7 @@
 #include <vector>
 
 using namespace skylit;
-using shading::MarchOptions;
+using horizon::MarchOptions;
 using shading::SunHorizon;
 using shading::SunShadowOptions;
 
@@ -121,7 +121,7 @@ std::vector<Method> methods() {
   for (const auto& [k, lines, core] : {std::tuple{4, 1, true}, std::tuple{4, 2, true}, std::tuple{8, 3, false}}) {
     SunShadowOptions o;
     o.horizon = SunHorizon::Swept;
-    o.march.method = shading::HorizonMethod::Sweep;
+    o.march.method = horizon::HorizonMethod::Sweep;
     o.march.sweep_near_steps = k;
     o.march.sweep_lines = lines;
     m.push_back({"(c) sweep K " + std::to_string(k) + ", " + std::to_string(lines) + " line(s), A_s only", o, core});

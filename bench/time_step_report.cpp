@@ -12,10 +12,10 @@
 //    24 values up to the day's highest sun: the wall's edge falls at every phase of
 //    the step, and the worst case is reported.
 // Sums by trapezoid_weights_hours. Usage: time_step_report
-#include "shading/atmosphere.h"
-#include "shading/sky_model.h"
-#include "shading/sun_disc.h"
-#include "shading/sun_position.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/sky_model.h"
+#include "shading/sky/sun_disc.h"
+#include "shading/sky/sun_position.h"
 #include "shading/time_integral.h"
 #include "shading/time_series.h"
 
@@ -41,13 +41,13 @@ constexpr double kMaxSunHoursError = 2.0;    // min
 // Visible disc fraction with a wall of a = height/distance to the east.
 double wall_fraction(double azimuth, double elevation, double a) {
   const double psi = std::remainder(azimuth - 90 * kDeg, 2 * kPi);
-  shading::DiscLine lines[2] = {shading::horizon_line(elevation, 0.0, 0.0)};
+  sky::DiscLine lines[2] = {sky::horizon_line(elevation, 0.0, 0.0)};
   int n = 1;
   if (std::abs(psi) < kPi / 2) {
     const double c = std::cos(psi);
-    lines[n++] = shading::horizon_line(elevation, std::atan(a * c), -a * std::sin(psi) / (1 + a * a * c * c));
+    lines[n++] = sky::horizon_line(elevation, std::atan(a * c), -a * std::sin(psi) / (1 + a * a * c * c));
   }
-  return shading::disc_fraction_above_lines({lines, static_cast<std::size_t>(n)});
+  return sky::disc_fraction_above_lines({lines, static_cast<std::size_t>(n)});
 }
 
 struct Day {
@@ -59,7 +59,7 @@ struct Day {
 
 // without_disc_events: drop the frames at which the whole disc has risen / starts to
 // set (the ablation of docs/time-step.md), keeping sunrise, sunset and the grid.
-Day integrate(const std::string& date, const sun::Observer& place, double step_min, const std::vector<double>& walls,
+Day integrate(const std::string& date, const sky::Observer& place, double step_min, const std::vector<double>& walls,
               bool without_disc_events = false) {
   shading::TimeSeriesOptions o;
   o.day_step_seconds = step_min * 60.0;
@@ -67,7 +67,7 @@ Day integrate(const std::string& date, const sun::Observer& place, double step_m
   shading::TimeSeries ts = shading::resolve_time_series(shading::parse_time_spec(date, o), place);
   if (without_disc_events && ts.instants.size() > 2)
     ts.instants.erase(std::remove_if(ts.instants.begin() + 1, ts.instants.end() - 1,
-                                     [&](sun::UtcTime t) { return std::fmod(t.unix_seconds, o.day_step_seconds) != 0; }),
+                                     [&](sky::UtcTime t) { return std::fmod(t.unix_seconds, o.day_step_seconds) != 0; }),
                       ts.instants.end() - 1);
   Day d;
   d.sun_hours.assign(walls.size(), 0.0);
@@ -76,7 +76,7 @@ Day integrate(const std::string& date, const sun::Observer& place, double step_m
   d.length_h = (ts.instants.back().unix_seconds - ts.instants.front().unix_seconds) / 3600.0;
   const std::vector<double> w = shading::trapezoid_weights_hours(ts.instants);
   for (std::size_t k = 0; k < w.size(); ++k) {
-    const sun::SolarPosition p = sun::solar_position(ts.instants[k], place);
+    const sky::SolarPosition p = sky::solar_position(ts.instants[k], place);
     const double az = p.azimuth_deg * kDeg, e = p.apparent_elevation_deg * kDeg;
     const sky::Sun s = sky::make_sun(sky::direction_from_azimuth_elevation(az, e), kTurbidity);
     const double e_flat = sky::esra_diffuse_horizontal(e, kTurbidity) * sky::twilight_factor(e) +
@@ -111,10 +111,10 @@ int main() {
   std::vector<double> ablated_e(std::size(kStepsMin), 0.0), ablated_h(std::size(kStepsMin), 0.0);
   for (double lat : latitudes)
     for (const char* date : dates) {
-      const sun::Observer place{lat, 0.0, 0.0};
+      const sky::Observer place{lat, 0.0, 0.0};
       // Walls whose top is seen at σ_j = j/(kWalls+1) of the noon elevation.
-      const sun::SunEvents ev = sun::sun_events(sun::parse_utc_time(std::string(date) + "T12:00Z"), place);
-      const double noon = sun::solar_position(ev.solar_noon, place).apparent_elevation_deg * kDeg;
+      const sky::SunEvents ev = sky::sun_events(sky::parse_utc_time(std::string(date) + "T12:00Z"), place);
+      const double noon = sky::solar_position(ev.solar_noon, place).apparent_elevation_deg * kDeg;
       std::vector<double> walls;
       for (int j = 1; j <= kWalls && noon > 0; ++j) walls.push_back(std::tan(noon * j / (kWalls + 1)));
       const Day ref = integrate(date, place, kReferenceMin, walls);

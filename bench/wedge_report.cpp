@@ -2,9 +2,9 @@
 // ‖assembled − exact projection‖₂ of the visibility of a smooth non-symmetric
 // horizon, for W azimuths, NLP orders N = n, 2n, 4n (n = 4), linear and
 // B-spline interpolation, and the split of that error by the parity of m.
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
+#include "shading/sh/wedge.h"
 #include "shading/visibility_truth.h"
-#include "shading/wedge.h"
 
 #include <cmath>
 #include <cstdio>
@@ -24,11 +24,11 @@ double horizon(double phi) {
 }
 
 sh::Vec exact_projection(int azimuths) {
-  truth::Occluders occ;
+  shading::Occluders occ;
   occ.horizon = horizon;
-  truth::IntegrationOptions opt;
+  shading::IntegrationOptions opt;
   opt.azimuths = azimuths;
-  return truth::project_visibility(kShOrder, occ, opt);
+  return shading::project_visibility(kShOrder, occ, opt);
 }
 
 sh::Vec assembled(int nlp_order, int w, WedgeInterpolation interp) {
@@ -62,7 +62,7 @@ int main() {
   std::printf("Horizon σ(φ) = 0.35 + 0.3 cos(φ−0.4) + 0.15 sin(2φ+1) + 0.1 cos 3φ rad (5°…50°), SH order n = %d.\n",
               kShOrder);
   std::printf(
-      "Exact projection: per azimuth exact in elevation (truth::project_visibility), 4096 azimuths; "
+      "Exact projection: per azimuth exact in elevation (shading::project_visibility), 4096 azimuths; "
       "‖exact‖ = %.4f, DC = %.4f; change from 2048 azimuths: %.1e.\n\n",
       norm, exact[0], converged);
 

@@ -96,7 +96,7 @@ class Texture2D {
 
 // A single-level r16ui 2D array texture of 16-bit codes (nearest, clamp to edge): one
 // layer per band, written as a layered uimage2DArray and read with texelFetch from a
-// usampler2DArray (the sweep's far slopes, shading::encode_far_slope).
+// usampler2DArray (the sweep's far slopes, horizon::encode_far_slope).
 // No storage-block or buffer-texture limit applies, only GL_MAX_TEXTURE_SIZE and
 // GL_MAX_ARRAY_TEXTURE_LAYERS (throws std::runtime_error beyond them).
 class TextureArray {

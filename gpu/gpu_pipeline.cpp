@@ -1,6 +1,6 @@
 #include "gpu/gpu_pipeline.h"
 
-#include "shading/horizon_ray.h"
+#include "shading/horizon/horizon_ray.h"
 #include "shading/reference_pipeline.h"
 
 #include <epoxy/gl.h>
@@ -27,15 +27,15 @@
 #include "gpu/shading_setup.h"
 #include "gpu/timer.h"
 #include "gpu/wedge_fourier.h"
-#include "shading/azimuth.h"
-#include "shading/horizon_march.h"
-#include "shading/horizon_sweep.h"
-#include "shading/horizon_subsample.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_march.h"
+#include "shading/horizon/horizon_subsample.h"
+#include "shading/horizon/horizon_sweep.h"
 #include "shading/lighting.h"
-#include "shading/nlp.h"
+#include "shading/sh/nlp.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
 #include "shading/sun_light.h"
-#include "shading/wedge.h"
 #include "terrain/pyramid.h"
 
 namespace skylit::gpu {
@@ -97,19 +97,19 @@ bool needs_visibility(Product product) { return product == Product::Shaded || pr
 
 // Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
 // the wedge operator's math-frame samples φ_j = j·2π/W for shaded and irradiance.
-// Snapped (see shading/azimuth.h) so cardinal rays along the grid's edges stay on it.
-std::vector<shading::Heading> band_headings(Product product, int w) {
-  std::vector<shading::Heading> out;
+// Snapped (see shading/horizon/azimuth.h) so cardinal rays along the grid's edges stay on it.
+std::vector<horizon::Heading> band_headings(Product product, int w) {
+  std::vector<horizon::Heading> out;
   for (int k = 0; k < w; ++k)
-    out.push_back(needs_visibility(product) ? shading::heading_from_math(shading::kTwoPi * k / w)
-                                            : shading::heading_from_geographic(shading::band_azimuth(k, w)));
+    out.push_back(needs_visibility(product) ? horizon::heading_from_math(horizon::kTwoPi * k / w)
+                                            : horizon::heading_from_geographic(horizon::band_azimuth(k, w)));
   return out;
 }
 
-// The far-slope codes' constants (shading/horizon_sweep.h), for the kernels that
+// The far-slope codes' constants (shading/horizon/horizon_sweep.h), for the kernels that
 // write or read them.
 GlslDefines& add_far_code_defines(GlslDefines& d) {
-  return d.set("FAR_CODE_HALF_RANGE", shading::kFarCodeHalfRange).set("FAR_CODE_MAX", shading::kFarCodeMax);
+  return d.set("FAR_CODE_HALF_RANGE", horizon::kFarCodeHalfRange).set("FAR_CODE_MAX", horizon::kFarCodeMax);
 }
 
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
@@ -129,7 +129,7 @@ void set_grid_uniforms(const ComputeProgram& p, const terrain::HeightField& f) {
   p.set_uniform("grid_width", f.width);
   p.set_uniform("grid_height", f.height);
   if (p.has_uniform("grid_dy")) p.set_uniform("grid_dy", static_cast<float>(f.dy));
-  if (p.has_uniform("edge_eps")) p.set_uniform("edge_eps", static_cast<float>(shading::edge_epsilon_texels(f)));
+  if (p.has_uniform("edge_eps")) p.set_uniform("edge_eps", static_cast<float>(horizon::edge_epsilon_texels(f)));
 }
 
 // compute_product's argument checks, before any kernel is built.
@@ -147,8 +147,8 @@ void validate_options(Product product, const shading::ProductOptions& o) {
   if (shading::uses_lighting(product, o)) shading::validate(*o.lighting);
 }
 
-bool bilinear_levels(const shading::MarchOptions& o) {
-  return shading::level_sampling(o) == shading::LevelSampling::Bilinear;
+bool bilinear_levels(const horizon::MarchOptions& o) {
+  return horizon::level_sampling(o) == horizon::LevelSampling::Bilinear;
 }
 
 // Whether the sun contributes (reference: luminance of the DNI > 0); else no shadow pass.
@@ -182,14 +182,14 @@ struct SweepTextures {
   }
 };
 
-// Stage 2 with the sweep (shading/horizon_sweep.h): horizon_sweep.comp for every band's
+// Stage 2 with the sweep (shading/horizon/horizon_sweep.h): horizon_sweep.comp for every band's
 // lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
-void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, const shading::MarchOptions& o,
-                const std::vector<shading::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
-  std::vector<shading::SweepGeometry> geometry;
+void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, const horizon::MarchOptions& o,
+                const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
+  std::vector<horizon::SweepGeometry> geometry;
   int max_samples = 1;
-  for (const shading::Heading& u : headings) {
-    geometry.push_back(shading::sweep_geometry(field, u, o.sweep_lines));
+  for (const horizon::Heading& u : headings) {
+    geometry.push_back(horizon::sweep_geometry(field, u, o.sweep_lines));
     max_samples = std::max(max_samples, geometry.back().samples);
   }
   const std::size_t per_line = static_cast<std::size_t>(max_samples) * 2 * sizeof(float);
@@ -200,18 +200,18 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
                              " samples exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size) + " (the sweep takes " +
                              std::to_string((max_size + 1) / 2) + " texels along an azimuth; --horizons march has no such limit)");
   int lanes = 1;
-  for (const shading::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
+  for (const horizon::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
   const std::size_t budget = software_renderer() ? kSoftwareHullBudgetBytes : kHullBudgetBytes;
   const std::size_t budget_lanes = std::max<std::size_t>(kMinSweepGroups * kSweepLocalSize, budget / per_line);
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
                                                   budget_lanes}));
   textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
-  far.clear(shading::kFarCodeNone);
+  far.clear(horizon::kFarCodeNone);
   far.bind_image(kFarImageUnit, false, true);
   set_grid_uniforms(sweep, field);
   sweep.set_uniform("stride", lanes);
   for (std::size_t k = 0; k < geometry.size(); ++k) {
-    const shading::SweepGeometry& g = geometry[k];
+    const horizon::SweepGeometry& g = geometry[k];
     sweep.set_uniform("band", static_cast<int>(k));
     sweep.set_uniform("x_dominant", g.x_dominant ? 1 : 0);
     sweep.set_uniform("delta_a", static_cast<float>(g.delta_a));
@@ -236,7 +236,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
 // SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
 // horizon_sweep.comp on the resident heights and row spacings (one layer).
 const TextureArray& sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
-                                   const shading::ProductOptions& o, shading::Heading u, const ResidentField& resident,
+                                   const shading::ProductOptions& o, horizon::Heading u, const ResidentField& resident,
                                    SweepTextures& textures) {
   const BufferTexture heights_tex(resident.heights()), row_dx_tex(resident.row_dx());
   heights_tex.bind_sampler(kHeights);
@@ -262,7 +262,7 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
   if (far) {  // SunHorizon::Swept: the sun's far slopes, swept already
     far->bind_sampler(kFar);
   } else {
-    const shading::MarchSchedule steps = shading::march_schedule(field, shading::sun_shadow_options(o).march);
+    const horizon::MarchSchedule steps = horizon::march_schedule(field, shading::sun_shadow_options(o).march);
     std::vector<float> schedule;
     for (double t : steps.distances) {
       schedule.push_back(static_cast<float>(t));
@@ -273,7 +273,7 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
     sun.set_uniform("steps", static_cast<int>(steps.distances.size()));
     // The highest height with the march's rounding slack: bilinear rises never exceed it
     // in float (sun_shadow.comp's early exit).
-    sun.set_uniform("max_height", static_cast<float>(shading::march_exit_height_bound(field.heights)));
+    sun.set_uniform("max_height", static_cast<float>(horizon::march_exit_height_bound(field.heights)));
   }
   const int chunk = static_cast<int>(std::clamp<std::size_t>(invocations / field.width, 1, field.height));
   GpuTimer timer;
@@ -292,10 +292,10 @@ double sun_pass(const ComputeProgram& sun, const terrain::HeightField& field, co
 
 // The sun of sun_shadow.comp as uniforms (the kernel's source, hence the driver's
 // compiled-kernel cache entry, is the same for every sun position), and its heading.
-std::vector<std::pair<std::string, double>> sun_uniforms(const glm::dvec3& s, shading::Heading& heading) {
+std::vector<std::pair<std::string, double>> sun_uniforms(const glm::dvec3& s, horizon::Heading& heading) {
   const double azimuth = sky::azimuth_of(s), elevation = sky::elevation_of(s);
   const double disc_radius = shading::SunShadowOptions{}.radius;
-  heading = shading::heading_from_geographic(azimuth);
+  heading = horizon::heading_from_geographic(azimuth);
   std::vector<std::pair<std::string, double>> uniforms = {{"sun_east", heading.east},
                                                           {"sun_north", heading.north},
                                                           {"sun_elevation", elevation},
@@ -343,9 +343,9 @@ struct GpuProductPipeline::Impl {
   // per-step row-spacing fetches (5–10 % of the march on llvmpipe). Compiled at first use.
   std::optional<ComputeProgram> march_one_dx;
   GlslDefines march_defines;
-  SweepTextures sweep_textures;  // the sweep's (shading/horizon_sweep.h)
+  SweepTextures sweep_textures;  // the sweep's (shading/horizon/horizon_sweep.h)
   bool last_compute_swept = false;  // far_codes() holds the last compute()'s
-  std::vector<shading::Heading> band_headings;
+  std::vector<horizon::Heading> band_headings;
   // surface_products.comp [cache][swept]: on the march's sigma buffer, or [.][1] on the
   // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE).
   // Compiled at first use.
@@ -390,7 +390,7 @@ struct GpuProductPipeline::Impl {
   // (SUN_SWEPT). Compiled at first use.
   std::optional<ComputeProgram> sun[2];
   GlslDefines sun_defines;
-  shading::Heading sun_heading;
+  horizon::Heading sun_heading;
   std::vector<std::pair<std::string, double>> sun_uniforms;  // float uniforms, when active
   const ComputeProgram& sun_kernel(bool swept) {
     if (!sun[swept]) {
@@ -412,7 +412,7 @@ struct GpuProductPipeline::Impl {
   std::optional<ComputeProgram> sweeps[2];
   const ComputeProgram& sweep_kernel(const shading::ProductOptions& o, bool sun) {
     if (!sweeps[sun]) {
-      const shading::MarchOptions m = sun ? shading::sun_shadow_options(o).march : o.march;
+      const horizon::MarchOptions m = sun ? shading::sun_shadow_options(o).march : o.march;
       GlslDefines d = common_defines(azimuths, o);
       d.set("RAY_TEXTURES", 1)
           .set("NEAR_STEPS", m.sweep_near_steps)
@@ -489,7 +489,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   k.azimuths = horizon_bands(product, options);
   k.band_headings = band_headings(product, k.azimuths);
   std::vector<float> headings;
-  for (const shading::Heading& u : k.band_headings) {
+  for (const horizon::Heading& u : k.band_headings) {
     headings.push_back(static_cast<float>(u.east));
     headings.push_back(static_cast<float>(u.north));
   }
@@ -509,8 +509,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("COEFFS_BINDING", kCoeffs)
         .set("RAY_TEXTURES", 1)  // heights, row spacing, coefficients: buffer textures at those units
         .set("SUBSAMPLE", options.subsample)
-        .set("EXIT_SLACK", shading::MarchExitSlack::angle)  // early exit (horizon_march.h)
-        .set("EXIT_TAIL", options.march.smooth_max ? shading::MarchExitSlack::smooth_window - 1 : 0)
+        .set("EXIT_SLACK", horizon::MarchExitSlack::angle)  // early exit (horizon_march.h)
+        .set("EXIT_TAIL", options.march.smooth_max ? horizon::MarchExitSlack::smooth_window - 1 : 0)
         .set("COARSE_SIGMA_BINDING", kCoarseSigma)
         .set("VALID_BINDING", kValid);
     k.march.emplace(ComputeProgram::from_embedded("horizon_march.comp", march));
@@ -534,7 +534,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       .set("EXACT_MARCH", options.exact ? 1 : 0)
       .set("PI", std::numbers::pi)
       .set("HALF_PI", std::numbers::pi / 2)
-      .set("TWO_PI", shading::kTwoPi)
+      .set("TWO_PI", horizon::kTwoPi)
       .set("VALID_BINDING", kValid)
       .set("OUTPUT_BINDING", kOutput);
   if (options.exact) prod.set("STEP_TEXELS", options.exact_options.step_texels);
@@ -568,7 +568,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   if (lit) k.products_sun_dir = glm::vec3(options.lighting->sun.direction);
   // The variant the options will most likely use now (compile time is reported apart);
   // the other at its first field.
-  k.products_kernel(options, options.march.method == shading::HorizonMethod::Sweep && !options.exact &&
+  k.products_kernel(options, options.march.method == horizon::HorizonMethod::Sweep && !options.exact &&
                                  options.subsample == 1);
 }
 
@@ -723,7 +723,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   const bool sweep = !reuse && shading::uses_sweep(field, mOptions);  // as the reference decides
   if (!reuse) k.last_compute_swept = sweep;
   if (!reuse && !mOptions.exact && !sweep) {
-    const shading::MarchSchedule steps = shading::march_schedule(field, mOptions.march);
+    const horizon::MarchSchedule steps = horizon::march_schedule(field, mOptions.march);
     steps_count = static_cast<int>(steps.distances.size());
     if (steps_count > kMaxMarchSteps)
       throw std::runtime_error("GPU pipeline: the march has " + std::to_string(steps_count) + " steps, over the kernel's " +
@@ -731,13 +731,13 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     first_distance = steps.distances.front();
     if (k.pyramid) {
       const auto pyramid_start = Clock::now();
-      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, shading::march_pyramid_options(mOptions.march),
+      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, horizon::march_pyramid_options(mOptions.march),
                                            !bilinear_levels(mOptions.march));
-      z_bound = static_cast<float>(shading::march_exit_height_bound(k.pyramid->max_coeff()));
+      z_bound = static_cast<float>(horizon::march_exit_height_bound(k.pyramid->max_coeff()));
       glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
       t.pyramid_ms = ms_since(pyramid_start);
     } else {  // bilinear level-0 heights
-      z_bound = static_cast<float>(shading::march_exit_height_bound(field.heights));
+      z_bound = static_cast<float>(horizon::march_exit_height_bound(field.heights));
     }
     // The step table (horizon_march.comp's uniform block, padded to MAX_STEPS): per
     // step its distance and its level's geometry, so the kernel reads no level table.
@@ -767,7 +767,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // horizon_march.comp marches them). Chunks of a multiple of s rows start on coarse
   // rows, so neighbouring chunks share one coarse row.
   const int s = mOptions.subsample;
-  const shading::SubsampleAxis coarse_x{w, s}, coarse_y{h, s};
+  const horizon::SubsampleAxis coarse_x{w, s}, coarse_y{h, s};
   if (s > 1 && chunk < h && chunk > s) chunk -= chunk % s;
   auto coarse_span = [&](int r0, int rows) {
     return std::pair{coarse_y.bracket(r0).c0, coarse_y.bracket(r0 + rows - 1).c1};
@@ -828,7 +828,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // Stage 2: the march per chunk, or the sweep over the whole field (the product kernel
   // adds each texel's near steps). Stage 3: the product. Row chunks bound a dispatch's
   // length.
-  const bool one_dx = !mOptions.exact && shading::one_row_spacing(field);
+  const bool one_dx = !mOptions.exact && horizon::one_row_spacing(field);
   const ComputeProgram& products =
       k.products_kernel(mOptions, sweep, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, Impl::kReadVis);  // compiled now: later frames only read
@@ -866,7 +866,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     // The CPU stops at t > D·(1 + 1e−12); float t carries ~1e−7 relative error, so the
     // slack is widened to keep the sample at t = D that the CPU keeps.
     const double d_max = mOptions.march.max_distance_m > 0.0 ? mOptions.march.max_distance_m
-                                                             : shading::dem_extent(field);
+                                                             : horizon::dem_extent(field);
     march->set_uniform("max_distance", static_cast<float>(d_max * (1.0 + 1e-6)));
   } else if (!sweep) {
     march->set_uniform("steps", steps_count);

@@ -7,10 +7,10 @@
 // Stages (gpu/README.md "Product pipeline"):
 //  0. lit products with a sun, and shadow: shaders/sun_shadow.comp, the sun's own march
 //     (shading::sun_march_options() schedule from C++, level-0 bilinear heights) and
-//     the disc fraction above the horizon and tangent-plane lines (shading/sun_disc);
+//     the disc fraction above the horizon and tangent-plane lines (shading/sky/sun_disc);
 //  1. height pyramid: built on the GPU (gpu/gpu_pyramid.h, terrain::HeightPyramid's
 //     levels to float32 rounding) from the resident heights; the step schedule from
-//     shading::march_schedule;
+//     horizon::march_schedule;
 //  2. shaders/horizon_march.comp: multi-resolution march per texel and azimuth with
 //     the CPU marcher's own step schedule (t_s, level l_s) → raw horizons;
 //     with options.exact, shaders/horizon_exact.comp (the dense exact march) instead;
@@ -26,7 +26,7 @@
 //     shading::srgb_code_value.
 //
 // Edge rules (exact-zero cardinal headings, samples within edge_epsilon_texels of the
-// last row/column count) are the CPU reference's, from shading/horizon_ray.h.
+// last row/column count) are the CPU reference's, from shading/horizon/horizon_ray.h.
 #pragma once
 
 #include <cstddef>
@@ -103,7 +103,7 @@ class GpuProductPipeline {
                                GpuPipelineTimings* timings = nullptr) const;
   double display_scale() const;
 
-  // Diagnostics: the sweep's far-slope codes (shading::sweep_far_slopes' layout, one
+  // Diagnostics: the sweep's far-slope codes (horizon::sweep_far_slopes' layout, one
   // field-sized layer per band, band-major) as the last compute() left them; empty if it
   // did not sweep. Tests compare them with the reference's codes.
   std::vector<std::uint16_t> far_codes() const;

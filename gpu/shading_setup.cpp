@@ -2,9 +2,9 @@
 
 #include "shading/lighting.h"
 #include "shading/reference_pipeline.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
 #include "shading/shading_modes.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
 
 #include <algorithm>
 #include <bit>

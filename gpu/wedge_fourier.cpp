@@ -1,6 +1,6 @@
 #include "gpu/wedge_fourier.h"
 
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The wedge assembly V = Σ_j Rz(φ_j) · M · [v_{j+first_tap} ; …] (shading/wedge.h)
+// The wedge assembly V = Σ_j Rz(φ_j) · M · [v_{j+first_tap} ; …] (shading/sh/wedge.h)
 // regrouped for surface_products.comp. φ_j = j·Δφ are uniform and M is the same for
 // every wedge, so V depends on the slices only through their Fourier sums
 //   C_m[l'] = Σ_k cos(m φ_k) v_k[l'],   S_m[l'] = Σ_k sin(m φ_k) v_k[l'],   0 ≤ m < n,
@@ -6,7 +6,7 @@
 // slice and applies G once per texel, instead of M and Rz once per wedge.
 #pragma once
 
-#include "shading/wedge.h"
+#include "shading/sh/wedge.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #version 450
 // Multi-resolution horizon march (DESIGN.md pipeline step 3), one invocation per
-// texel and azimuth band. GLSL twin of shading::HorizonMarcher::max_elevation
-// (shading/horizon_march.cpp): step s at distance t_s reads pyramid level l_s (the
+// texel and azimuth band. GLSL twin of horizon::HorizonMarcher::max_elevation
+// (shading/horizon/horizon_march.cpp): step s at distance t_s reads pyramid level l_s (the
 // schedule (t_s, l_s) is the CPU marcher's own, uploaded), cubic B-spline heights
 // (terrain::sample_bspline: clamp-to-edge coefficients, texel-centre rule) or bilinear
 // ones (LEVEL_BILINEAR: terrain::sample_bilinear on the level's samples), blocking
@@ -29,9 +29,9 @@
 
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 1) in;
 
-// Heading (east, north) of each band, computed by C++ (shading/azimuth.h).
+// Heading (east, north) of each band, computed by C++ (shading/horizon/azimuth.h).
 layout(std430, binding = HEADINGS_BINDING) readonly buffer Headings { vec2 headings[]; };
-// Step s, from shading::HorizonMarcher's schedule and the pyramid's geometry (C++):
+// Step s, from horizon::HorizonMarcher's schedule and the pyramid's geometry (C++):
 // step_geom[s] = (t_s in metres, step_x, step_y of its level l_s in level-0 texels
 // (terrain/pyramid.h), 0), step_level[s] = (width, height, offset of the coefficients of
 // l_s, l_s). A uniform block: the same address in every lane is one load, where an SSBO
@@ -191,7 +191,7 @@ float marchRay(int i, int j, vec2 u) {
 }
 
 #if SUBSAMPLE > 1
-// Coarse grid of shading::SubsampleAxis: positions 0, s, 2s, ... and the last index.
+// Coarse grid of horizon::SubsampleAxis: positions 0, s, 2s, ... and the last index.
 int coarsePosition(int c, int size) { return min(c * SUBSAMPLE, size - 1); }
 // Texel t between coarse positions c0 <= c1, weight a on c1 (c0 == c1: t is coarse).
 void coarseBracket(int t, int size, out int c0, out int c1, out float a) {

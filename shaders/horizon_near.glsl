@@ -1,12 +1,12 @@
-// Horizon sweep, per texel (shading/horizon_sweep.h): the NEAR_STEPS half-texel steps
+// Horizon sweep, per texel (shading/horizon/horizon_sweep.h): the NEAR_STEPS half-texel steps
 // of the texel's own ray (as the exact march takes them) and the far slope its owner
 // line found; a ray leaving the grid among them (the first step is always checked)
-// takes no far field. GLSL twin of shading::sweep_max_elevation, before its atan.
+// takes no far field. GLSL twin of horizon::sweep_max_elevation, before its atan.
 //
 // Needs horizon_ray.glsl (included first) and NEAR_STEPS, INV_TWO_R_EFF,
 // FAR_CODE_HALF_RANGE.
 
-// shading::decode_far_slope: code 0 is none (-inf).
+// horizon::decode_far_slope: code 0 is none (-inf).
 float decodeFarSlope(uint code) {
   if (code == 0u) return uintBitsToFloat(0xff800000u);
   float x = float(code) / float(FAR_CODE_HALF_RANGE) - 1.0;

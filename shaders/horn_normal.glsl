@@ -1,5 +1,5 @@
 // Horn's 3x3 gradient, edge texels replicated, unit (east, north, up): twin of
-// shading::horn_normal. Differences are taken against the centre height, so float
+// horizon::horn_normal. Differences are taken against the centre height, so float
 // keeps the small slopes of high terrain.
 //
 // Needs horizon_ray.glsl (included first: heightAt, rowDx, grid_dy).

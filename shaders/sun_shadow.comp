@@ -3,7 +3,7 @@
 // GLSL twin of shading::shadow_fraction_field with its defaults (shading/sun_light.cpp,
 // SunHorizon::Marched, disc_slope off): one ray in the sun's azimuth on the sun march's
 // step schedule t_s (shading::sun_march_options(): level-0 bilinear heights, plain
-// max, Earth curvature), then the disc frame of shading/sun_disc.cpp: the horizon as a
+// max, Earth curvature), then the disc frame of shading/sky/sun_disc.cpp: the horizon as a
 // level line y = (sigma - e_s)/r across [-1, 1] and the tangent plane line, the
 // polygon clipped by both (Sutherland-Hodgman on the square [-2, 2]^2) and intersected
 // with the unit disc exactly (disc_fraction_above_polyline with two points).
@@ -23,7 +23,7 @@
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 1) in;
 
 layout(std430, binding = VALID_BINDING) readonly buffer Valid { uint valid_bytes[]; };
-// shading::HorizonMarcher(field, sun march options): (t_s, level) per step; level unused.
+// horizon::HorizonMarcher(field, sun march options): (t_s, level) per step; level unused.
 layout(std430, binding = SCHEDULE_BINDING) readonly buffer Schedule { vec2 schedule[]; };
 // One value per texel of the whole field, row-major.
 layout(std430, binding = SHADOW_BINDING) writeonly buffer Shadow { float shadow[]; };
@@ -31,7 +31,7 @@ layout(std430, binding = SHADOW_BINDING) writeonly buffer Shadow { float shadow[
 uniform int row_offset;  // first row of this dispatch
 uniform int chunk_rows;  // rows of this dispatch
 uniform int steps;       // schedule length
-// The sun, from C++: its snapped heading (shading::heading_from_geographic of the
+// The sun, from C++: its snapped heading (horizon::heading_from_geographic of the
 // geographic azimuth A_s), elevation e_s (rad), and sin/cos of A_s and e_s.
 uniform float sun_east;
 uniform float sun_north;
@@ -41,7 +41,7 @@ uniform float sun_cos_az;
 uniform float sun_sin_el;
 uniform float sun_cos_el;
 // Early exit of the march (sunHorizon), from C++: the field's highest height plus a
-// rounding slack (shading::march_exit_height_bound: no bilinear sample rises above it;
+// rounding slack (horizon::march_exit_height_bound: no bilinear sample rises above it;
 // +inf: no exit), and the slopes beyond which the
 // disc frame's level y = (sigma - e_s)/r leaves [-2, 2] (the clip square below): above
 // hidden_slope the disc is hidden whatever follows; a horizon that stays below
@@ -104,7 +104,7 @@ float sunHorizon(int i, int j) {
 }
 #endif
 
-// shading/sun_disc.cpp: lines {nx, ny, offset}, visible where nx x + ny y + offset >= 0.
+// shading/sky/sun_disc.cpp: lines {nx, ny, offset}, visible where nx x + ny y + offset >= 0.
 const int MAX_VERTICES = 8;  // a square plus one vertex per clip (four clips)
 struct Polygon {
   vec2 v[MAX_VERTICES];
@@ -152,7 +152,7 @@ float discPolygonArea(Polygon poly) {
   return max(area, 0.0);
 }
 
-// shading::tangent_plane_line for the sun's direction.
+// sky::tangent_plane_line for the sun's direction.
 vec3 tangentPlaneLine(vec3 n) {
   float ns = n.x * sun_cos_el * sun_sin_az + n.y * sun_cos_el * sun_cos_az + n.z * sun_sin_el;
   float nx = n.x * sun_cos_az - n.y * sun_sin_az;

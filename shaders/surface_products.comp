@@ -2,7 +2,7 @@
 // The per-texel products (DESIGN.md "Products") from raw horizons, one invocation per
 // texel; PRODUCT selects one at compile time. The horizons come from the march's sigma
 // buffer, or (SWEPT 1) from the sweep's far-slope codes and the texel's own near steps,
-// computed here (shading::sweep_max_elevation; horizon_near.glsl), so no sigma buffer is
+// computed here (horizon::sweep_max_elevation; horizon_near.glsl), so no sigma buffer is
 // written or read. GLSL twin of the cases of shading::compute_product
 // (shading/reference_pipeline.cpp):
 //   PRODUCT_HORIZON  degrees, floored at the receiver's ground -atan(t1/(2 R_eff)),

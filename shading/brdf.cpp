@@ -1,6 +1,6 @@
 #include "shading/brdf.h"
 
-#include "shading/quadrature.h"
+#include "shading/sh/quadrature.h"
 
 #include <glm/geometric.hpp>
 
@@ -92,7 +92,7 @@ sh::Vec log_lobe_zh_quadrature(int order, double r, double epsilon) {
   sh::Vec I(order);
   for (int l = 0; l < order; ++l) I[l] = L * legendre_antiderivative(l, z1);
   // ln k₀ + r ln t on [z₁, 1], pieces [z₁·2^k, z₁·2^{k+1}] ∩ [z₁, 1].
-  const auto unit = quad::gauss_legendre(24, 0.0, 1.0);
+  const auto unit = sh::gauss_legendre(24, 0.0, 1.0);
   for (double a = z1; a < 1.0; a *= 2.0) {
     const double b = std::min(1.0, 2.0 * a), len = b - a;
     for (std::size_t q = 0; q < unit.nodes.size(); ++q) {

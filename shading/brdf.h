@@ -18,7 +18,7 @@
 // It is rotated toward a with sh::rotate_zh / sh::add_rotated_zh.
 #pragma once
 
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
 
 namespace skylit::shading {
 

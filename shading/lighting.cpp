@@ -1,10 +1,10 @@
 #include "shading/lighting.h"
 
-#include "shading/sky_cie.h"
-#include "shading/sky_envmap.h"
-#include "shading/sky_preetham.h"
-#include "shading/sky_sh.h"
-#include "shading/time_utc.h"
+#include "shading/sky/sky_cie.h"
+#include "shading/sky/sky_envmap.h"
+#include "shading/sky/sky_preetham.h"
+#include "shading/sky/sky_sh.h"
+#include "shading/sky/time_utc.h"
 
 #include <glm/geometric.hpp>
 
@@ -103,7 +103,7 @@ bool is_overcast(const SkySpec& spec) {
 }
 
 void validate(const LightingRequest& r) {
-  if (!r.time.empty()) sun::parse_utc_time(r.time);  // throws with the rule it broke
+  if (!r.time.empty()) sky::parse_utc_time(r.time);  // throws with the rule it broke
   if (r.latitude_deg)
     require(std::isfinite(*r.latitude_deg) && std::abs(*r.latitude_deg) <= 90.0,
             "--lat " + number(*r.latitude_deg) + " outside -90..90 degrees");
@@ -128,7 +128,7 @@ bool needs_place(const LightingRequest& r) {
   return !r.time.empty() && !(r.sun_azimuth_deg && r.sun_elevation_deg);
 }
 
-ResolvedLighting resolve_lighting(const LightingRequest& r, const std::optional<sun::Observer>& place) {
+ResolvedLighting resolve_lighting(const LightingRequest& r, const std::optional<sky::Observer>& place) {
   validate(r);
   const SkySpec spec = parse_sky_spec(r.sky);
   ResolvedLighting out;
@@ -136,12 +136,12 @@ ResolvedLighting resolve_lighting(const LightingRequest& r, const std::optional<
   out.sun_elevation_deg = kDefaultSunElevationDeg;
   std::string where = "gdaldem's default sun";
   if (needs_place(r)) {
-    std::optional<sun::Observer> at = place;
-    if (r.latitude_deg) at = sun::Observer{*r.latitude_deg, *r.longitude_deg, r.height_m};
+    std::optional<sky::Observer> at = place;
+    if (r.latitude_deg) at = sky::Observer{*r.latitude_deg, *r.longitude_deg, r.height_m};
     require(at.has_value(),
             "--time needs the DEM's location, but the DEM has no CRS: give --lat and --lon (degrees)");
     // Apparent (refracted) elevation: where the sun is seen, and what air mass uses.
-    const sun::SolarPosition p = sun::solar_position(sun::parse_utc_time(r.time), *at);
+    const sky::SolarPosition p = sky::solar_position(sky::parse_utc_time(r.time), *at);
     out.sun_azimuth_deg = p.azimuth_deg;
     out.sun_elevation_deg = p.apparent_elevation_deg;
     where = "sun at " + r.time + ", lat " + number(at->latitude_deg) + " lon " + number(at->longitude_deg);

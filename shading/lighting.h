@@ -25,9 +25,9 @@
 // visibility can ring slightly negative, and radiance never is.
 #pragma once
 
-#include "shading/atmosphere.h"
-#include "shading/sky_model.h"
-#include "shading/sun_position.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/sky_model.h"
+#include "shading/sky/sun_position.h"
 
 #include <memory>
 #include <optional>
@@ -100,6 +100,6 @@ struct ResolvedLighting {
 // DEM's centre). Without a time or angles the sun is gdaldem's (315°, 45°). Throws
 // std::invalid_argument (bad request, no place for a time, a map that is not 2:1) or
 // std::runtime_error (unreadable map), one line each.
-ResolvedLighting resolve_lighting(const LightingRequest& request, const std::optional<sun::Observer>& place);
+ResolvedLighting resolve_lighting(const LightingRequest& request, const std::optional<sky::Observer>& place);
 
 }  // namespace skylit::shading

@@ -1,6 +1,6 @@
 #include "shading/products.h"
 
-#include "shading/azimuth.h"
+#include "shading/horizon/azimuth.h"
 
 #include <algorithm>
 #include <cmath>

@@ -32,10 +32,10 @@
 // Nodata texels are NaN in every band (the writer maps NaN to nodata).
 #pragma once
 
-#include "shading/horizon_march.h"
-#include "shading/shading_modes.h"
-#include "shading/wedge.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/lighting.h"
+#include "shading/sh/wedge.h"
+#include "shading/shading_modes.h"
 #include "terrain/height_field.h"
 
 #include <functional>
@@ -81,7 +81,7 @@ struct ProductOptions {
   ExactOptions exact_options;
   ShadedOptions shaded;
   // Horizon sub-sampling s ∈ {1, 2, 4} (DESIGN.md step 4, NS09 §7). Coarse positions
-  // per axis: 0, s, 2s, … and always the last index (shading/horizon_subsample.h). The
+  // per axis: 0, s, 2s, … and always the last index (shading/horizon/horizon_subsample.h). The
   // raw march maxima σ_k (before any floor) are marched at the coarse texels exactly as
   // with s = 1; every other texel mixes them linearly in each axis between its
   // bracketing coarse positions (bilinear; only the samples with a non-zero weight: one,

@@ -3,7 +3,7 @@
 // and why each preset sits where it does).
 #pragma once
 
-#include "shading/horizon_march.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/products.h"
 
 #include <optional>

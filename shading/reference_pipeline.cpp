@@ -1,14 +1,14 @@
 #include "shading/reference_pipeline.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_subsample.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_subsample.h"
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/horizon/surface_normals.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
-#include "shading/sh_exp.h"
-#include "shading/quadrature.h"
 #include "shading/sun_light.h"
-#include "shading/surface_normals.h"
-#include "shading/wedge.h"
 
 #include <algorithm>
 #include <atomic>
@@ -88,7 +88,7 @@ SkyInput sky_input(ShadingMode mode, int order, Radiance radiance, bool z_symmet
   SkyInput in;
   in.z_symmetric = z_symmetric;
   if (mode != ShadingMode::SkyBrdfTable)
-    in.sh = quad::project(order, quad::sphere_product_rule(64, 128, 0.0, 1.0), radiance);
+    in.sh = sh::project(order, sh::sphere_product_rule(64, 128, 0.0, 1.0), radiance);
   in.radiance = std::move(radiance);
   return in;
 }

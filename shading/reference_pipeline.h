@@ -3,8 +3,8 @@
 // rows spread over worker threads. Double precision throughout; clear, not fast.
 #pragma once
 
-#include "shading/horizon_exact.h"
-#include "shading/horizon_march.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/products.h"
 #include "shading/shading_modes.h"
 #include "shading/sky_brdf_table.h"

@@ -1,13 +1,13 @@
 #include "shading/reference_renderer.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_subsample.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_subsample.h"
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/reference_pipeline.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
 #include "shading/sun_light.h"
-#include "shading/surface_normals.h"
-#include "shading/wedge.h"
 
 #include <algorithm>
 #include <chrono>

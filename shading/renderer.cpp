@@ -10,7 +10,7 @@
 namespace skylit::shading {
 
 void validate(const FrameInputs& inputs) {
-  for (const sh::Sphere& s : inputs.spheres)
+  for (const blockers::Sphere& s : inputs.spheres)
     if (!std::isfinite(s.centre.x) || !std::isfinite(s.centre.y) || !std::isfinite(s.centre.z) ||
         !(s.radius > 0.0) || !std::isfinite(s.radius))
       throw std::invalid_argument("a sphere blocker needs a finite centre and a finite radius > 0");

@@ -9,9 +9,9 @@
 // compute_product would for that field, product, options and lighting.
 #pragma once
 
+#include "shading/blockers/sphere_blocker.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
-#include "shading/sphere_blocker.h"
 #include "terrain/height_field.h"
 
 #include <cstddef>
@@ -30,7 +30,7 @@ struct FrameInputs {
   // centre of texel (0, 0) (texel (i, j) is at (i·dx, −j·dy)), z a height in the DEM's
   // vertical datum. Validated here; their shading arrives with the aircraft work, and a
   // frame with spheres is refused until then rather than shaded without them.
-  std::vector<sh::Sphere> spheres;
+  std::vector<blockers::Sphere> spheres;
   // Replaces ProductOptions::shaded.exposure for this frame (`shaded` only).
   std::optional<double> exposure;
 };

@@ -1,6 +1,6 @@
 #include "shading/shading_modes.h"
 
-#include "shading/sh_rotation.h"
+#include "shading/sh/sh_rotation.h"
 
 #include <stdexcept>
 #include <vector>

@@ -21,8 +21,8 @@
 #pragma once
 
 #include "shading/brdf.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
 #include "shading/sky_brdf_table.h"
 
 #include <memory>

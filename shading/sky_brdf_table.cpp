@@ -1,8 +1,8 @@
 #include "shading/sky_brdf_table.h"
 
 #include "shading/brdf.h"
-#include "shading/quadrature.h"
-#include "shading/sh_rotation.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_rotation.h"
 
 #include <glm/geometric.hpp>
 
@@ -47,7 +47,7 @@ sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm:
   const glm::dvec3 a = glm::normalize(axis_in);
   glm::dvec3 e1, e2;
   frame_about(a, e1, e2);
-  const auto unit = quad::gauss_legendre(q.gauss_nodes, 0.0, 1.0);
+  const auto unit = sh::gauss_legendre(q.gauss_nodes, 0.0, 1.0);
   const double dphi = 2.0 * sh::kPi / q.azimuths;
   sh::Vec out(nc, 0.0);
   double y[sh::kMaxOrder * sh::kMaxOrder];

@@ -34,7 +34,7 @@
 // interpolation must match this CPU lookup. Mono: an RGB sky is three tables.
 #pragma once
 
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
 
 #include <functional>
 #include <span>

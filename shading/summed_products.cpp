@@ -22,7 +22,7 @@ std::string_view summed_product_unit(SummedProduct p) { return p == SummedProduc
 
 Product frame_product(SummedProduct p) { return p == SummedProduct::Insolation ? Product::Irradiance : Product::Shadow; }
 
-SeriesSum::SeriesSum(SummedProduct product, std::span<const sun::UtcTime> instants, int width, int height)
+SeriesSum::SeriesSum(SummedProduct product, std::span<const sky::UtcTime> instants, int width, int height)
     : product_(product), weights_(trapezoid_weights_hours(instants)), width_(width), height_(height),
       sum_(static_cast<std::size_t>(width) * height, 0.0), nodata_(sum_.size(), 0) {}
 

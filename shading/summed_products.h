@@ -10,7 +10,7 @@
 
 #include "shading/lighting.h"
 #include "shading/products.h"
-#include "shading/time_utc.h"
+#include "shading/sky/time_utc.h"
 
 #include <optional>
 #include <span>
@@ -31,7 +31,7 @@ Product frame_product(SummedProduct p);
 class SeriesSum {
  public:
   // Throws std::invalid_argument unless the instants strictly increase.
-  SeriesSum(SummedProduct product, std::span<const sun::UtcTime> instants, int width, int height);
+  SeriesSum(SummedProduct product, std::span<const sky::UtcTime> instants, int width, int height);
   // Whether frame k has to be rendered at all (sun hours: not while the sun is down).
   bool needs_frame(int k, const Lighting& lighting) const;
   // Adds frame k (a `frame_product` raster of the field's size).

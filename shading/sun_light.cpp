@@ -1,11 +1,11 @@
 #include "shading/sun_light.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_ray.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_ray.h"
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/reference_pipeline.h"
-#include "shading/sun_disc.h"
-#include "shading/surface_normals.h"
+#include "shading/sky/sun_disc.h"
 
 #include <algorithm>
 #include <array>

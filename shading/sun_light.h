@@ -21,10 +21,10 @@
 // top sees a sun slightly below 0°; its DNI is 0 there anyway (atmosphere.h).
 #pragma once
 
-#include "shading/atmosphere.h"
-#include "shading/horizon_exact.h"
-#include "shading/horizon_march.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/products.h"
+#include "shading/sky/atmosphere.h"
 #include "terrain/height_field.h"
 
 #include <glm/vec3.hpp>

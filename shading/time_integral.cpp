@@ -1,12 +1,12 @@
 #include "shading/time_integral.h"
 
-#include "shading/sky_model.h"
+#include "shading/sky/sky_model.h"
 
 #include <stdexcept>
 
 namespace skylit::shading {
 
-std::vector<double> trapezoid_weights_hours(std::span<const sun::UtcTime> t) {
+std::vector<double> trapezoid_weights_hours(std::span<const sky::UtcTime> t) {
   std::vector<double> w(t.size(), 0.0);
   for (std::size_t k = 1; k < t.size(); ++k) {
     const double h = (t[k].unix_seconds - t[k - 1].unix_seconds) / 3600.0;

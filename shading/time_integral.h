@@ -10,8 +10,8 @@
 // The integral covers [first, last] frame; values between frames are taken as linear.
 #pragma once
 
-#include "shading/atmosphere.h"
-#include "shading/time_utc.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/time_utc.h"
 
 #include <span>
 #include <vector>
@@ -21,7 +21,7 @@ namespace skylit::shading {
 // Trapezoid weights in hours: w_0 = (t_1 − t_0)/2, w_k = (t_{k+1} − t_{k−1})/2,
 // w_n = (t_n − t_{n−1})/2 (one instant: a single weight 0, no interval). Throws
 // std::invalid_argument unless the instants strictly increase.
-std::vector<double> trapezoid_weights_hours(std::span<const sun::UtcTime> instants);
+std::vector<double> trapezoid_weights_hours(std::span<const sky::UtcTime> instants);
 
 // Whether a frame's sun counts for sun hours: its centre above the apparent
 // horizon, exactly where its DNI is non-zero (atmosphere.h), so sun hours and the

@@ -1,6 +1,6 @@
 #include "shading/time_series.h"
 
-#include "shading/atmosphere.h"
+#include "shading/sky/atmosphere.h"
 
 #include <algorithm>
 #include <chrono>
@@ -100,15 +100,15 @@ std::string duration_rule(std::string_view text) {
   return "invalid duration " + quoted(text) + ": expected ISO 8601 P[nD][T[nH][nM][nS]], e.g. PT15M, PT1H30M or P1D";
 }
 
-std::vector<sun::UtcTime> parse_interval(std::string_view text, std::size_t max_frames) {
+std::vector<sky::UtcTime> parse_interval(std::string_view text, std::size_t max_frames) {
   const std::size_t a = text.find('/');
   const std::size_t b = text.find('/', a + 1);
   const std::string example = "START/END/STEP, e.g. 2026-06-21T04:00Z/2026-06-21T20:00Z/PT15M";
   if (b == std::string_view::npos) fail("time interval " + quoted(text) + " needs a step: " + example);
   if (text.find('/', b + 1) != std::string_view::npos)
     fail("invalid time interval " + quoted(text) + ": expected " + example);
-  const sun::UtcTime start = sun::parse_utc_time(trim(text.substr(0, a)));
-  const sun::UtcTime end = sun::parse_utc_time(trim(text.substr(a + 1, b - a - 1)));
+  const sky::UtcTime start = sky::parse_utc_time(trim(text.substr(0, a)));
+  const sky::UtcTime end = sky::parse_utc_time(trim(text.substr(a + 1, b - a - 1)));
   const double step = parse_duration_seconds(trim(text.substr(b + 1)));
   if (!(step > 0.0)) fail("time interval " + quoted(text) + ": the step must be positive");
   const double span = end.unix_seconds - start.unix_seconds;
@@ -117,20 +117,20 @@ std::vector<sun::UtcTime> parse_interval(std::string_view text, std::size_t max_
   const double whole = std::floor(span / step + kOnStepSeconds / step);
   const bool end_off_step = span - whole * step > kOnStepSeconds;
   check_frames(whole + 1 + (end_off_step ? 1 : 0), max_frames, "time interval " + quoted(text));
-  std::vector<sun::UtcTime> out;
+  std::vector<sky::UtcTime> out;
   for (double k = 0; k <= whole; ++k) out.push_back({start.unix_seconds + k * step});
   if (end_off_step) out.push_back(end);
   out.back() = end;  // exactly END, also when it is on a step to within a millisecond
   return out;
 }
 
-std::vector<sun::UtcTime> parse_list(std::string_view text, std::size_t max_frames) {
+std::vector<sky::UtcTime> parse_list(std::string_view text, std::size_t max_frames) {
   const std::vector<std::string_view> items = split_list(text);
   check_frames(static_cast<double>(items.size()), max_frames, "time list " + quoted(text));
-  std::vector<sun::UtcTime> out;
+  std::vector<sky::UtcTime> out;
   for (std::size_t k = 0; k < items.size(); ++k) {
     if (items[k].empty()) fail("time list " + quoted(text) + ": item " + std::to_string(k + 1) + " is empty");
-    out.push_back(sun::parse_utc_time(items[k]));
+    out.push_back(sky::parse_utc_time(items[k]));
     if (k > 0 && !(out[k].unix_seconds > out[k - 1].unix_seconds))
       fail("time list " + quoted(text) + ": times must increase, but " + std::string(items[k]) +
            " is not after " + std::string(items[k - 1]));
@@ -139,13 +139,13 @@ std::vector<sun::UtcTime> parse_list(std::string_view text, std::size_t max_fram
 }
 
 // Apparent (refracted) elevation of the sun's centre, radians: what the lighting uses.
-double apparent_elevation(sun::UtcTime t, const sun::Observer& place) {
-  return sun::solar_position(t, place).apparent_elevation_deg * std::numbers::pi / 180.0;
+double apparent_elevation(sky::UtcTime t, const sky::Observer& place) {
+  return sky::solar_position(t, place).apparent_elevation_deg * std::numbers::pi / 180.0;
 }
 
 // The instant in [lo, hi] at which the apparent elevation crosses `target`, given
 // that it does so once there (bisection; 2⁻⁴⁰ of a half day is far below 1 ms).
-sun::UtcTime crossing(sun::UtcTime lo, sun::UtcTime hi, double target, const sun::Observer& place) {
+sky::UtcTime crossing(sky::UtcTime lo, sky::UtcTime hi, double target, const sky::Observer& place) {
   const bool rising = apparent_elevation(lo, place) < target;
   double a = lo.unix_seconds, b = hi.unix_seconds;
   for (int i = 0; i < 40; ++i) {
@@ -155,7 +155,7 @@ sun::UtcTime crossing(sun::UtcTime lo, sun::UtcTime hi, double target, const sun
   return {0.5 * (a + b)};
 }
 
-std::string place_text(const sun::Observer& p) {
+std::string place_text(const sky::Observer& p) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "lat %.4g lon %.4g", p.latitude_deg, p.longitude_deg);
   return buf;
@@ -247,7 +247,7 @@ TimeSpec parse_time_spec(std::string_view raw, const TimeSeriesOptions& options)
 
 bool needs_place(const TimeSpec& spec) { return spec.date.has_value(); }
 
-TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Observer>& place) {
+TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sky::Observer>& place) {
   TimeSeries out;
   if (!spec.date) {
     out.instants = spec.instants;
@@ -256,16 +256,16 @@ TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Ob
   const CivilDate& d = *spec.date;
   if (!place) fail("the date " + date_text(d) + " needs a place (latitude, longitude) for its sunrise and sunset");
   // The local-mean-time day sun_events uses: UTC midnight shifted by longitude/15 h.
-  const double day_start = sun::utc_from_civil(d.year, d.month, d.day).unix_seconds -
+  const double day_start = sky::utc_from_civil(d.year, d.month, d.day).unix_seconds -
                            place->longitude_deg / 360.0 * kSecondsPerDay;
   const double day_end = day_start + kSecondsPerDay;
-  const sun::SunEvents ev = sun::sun_events({day_start + 0.5 * kSecondsPerDay}, *place);
+  const sky::SunEvents ev = sky::sun_events({day_start + 0.5 * kSecondsPerDay}, *place);
   const std::string where = date_text(d) + " at " + place_text(*place);
   if (ev.always_down) {
     out.note = "polar night on " + where + ": the sun stays below the horizon all day; no frames";
     return out;
   }
-  std::vector<sun::UtcTime> events;  // the frames that are not on the grid
+  std::vector<sky::UtcTime> events;  // the frames that are not on the grid
   double start = day_start, end = day_end;
   if (ev.always_up) {
     out.note = "polar day on " + where + ": the sun stays up; frames cover the whole local day (24 h)";
@@ -277,7 +277,7 @@ TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Ob
                  (ev.sunrise ? "end with" : "begin with") + " the local day";
     // Whole disc risen / about to set, if its centre ever climbs that high.
     const double r = sky::kSunAngularRadius;
-    const sun::UtcTime noon = ev.solar_noon;
+    const sky::UtcTime noon = ev.solar_noon;
     if (apparent_elevation(noon, *place) > r && noon.unix_seconds > start && noon.unix_seconds < end) {
       if (apparent_elevation({start}, *place) < r) events.push_back(crossing({start}, noon, r, *place));
       if (apparent_elevation({end}, *place) < r) events.push_back(crossing(noon, {end}, r, *place));
@@ -290,22 +290,22 @@ TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Ob
   check_day_step(step);  // a TimeSpec built by hand, too
   const auto near_event = [&](double t) {
     return std::any_of(events.begin(), events.end(),
-                       [&](sun::UtcTime e) { return std::abs(t - e.unix_seconds) < 0.25 * step; });
+                       [&](sky::UtcTime e) { return std::abs(t - e.unix_seconds) < 0.25 * step; });
   };
   out.instants = events;
   for (double k = std::floor(start / step) + 1; k * step < end; ++k)
     if (!near_event(k * step)) out.instants.push_back({k * step});
   std::sort(out.instants.begin(), out.instants.end(),
-            [](sun::UtcTime a, sun::UtcTime b) { return a.unix_seconds < b.unix_seconds; });
+            [](sky::UtcTime a, sky::UtcTime b) { return a.unix_seconds < b.unix_seconds; });
   check_frames(static_cast<double>(out.instants.size()), spec.max_frames, "the date " + date_text(d));
   return out;
 }
 
-std::string format_instant(sun::UtcTime t) {
+std::string format_instant(sky::UtcTime t) {
   const double whole = std::floor(t.unix_seconds);
   const int millis = static_cast<int>(std::lround((t.unix_seconds - whole) * 1000.0));
-  if (millis == 0 || millis == 1000) return sun::format_utc_time(t);
-  std::string text = sun::format_utc_time({whole});
+  if (millis == 0 || millis == 1000) return sky::format_utc_time(t);
+  std::string text = sky::format_utc_time({whole});
   char fraction[8];
   std::snprintf(fraction, sizeof fraction, ".%03d", millis);
   return text.insert(text.size() - 1, fraction);

@@ -22,8 +22,8 @@
 // resolved against one afterwards (resolve_time_series).
 #pragma once
 
-#include "shading/sun_position.h"
-#include "shading/time_utc.h"
+#include "shading/sky/sun_position.h"
+#include "shading/sky/time_utc.h"
 
 #include <cstddef>
 #include <optional>
@@ -49,7 +49,7 @@ struct CivilDate {
 
 // A parsed specification: explicit instants, or a date still to be resolved at a place.
 struct TimeSpec {
-  std::vector<sun::UtcTime> instants;  // strictly increasing; empty for a date
+  std::vector<sky::UtcTime> instants;  // strictly increasing; empty for a date
   std::optional<CivilDate> date;
   double day_step_seconds = kDefaultDayStepSeconds;
   std::size_t max_frames = kDefaultMaxFrames;
@@ -71,16 +71,16 @@ TimeSpec parse_time_spec(std::string_view text, const TimeSeriesOptions& options
 bool needs_place(const TimeSpec& spec);
 
 struct TimeSeries {
-  std::vector<sun::UtcTime> instants;  // strictly increasing
+  std::vector<sky::UtcTime> instants;  // strictly increasing
   std::string note;                    // one line when a date has no sunrise/sunset
 };
 
 // ISO 8601 of an instant, to the millisecond where it is not a whole second (a date's
 // sunrise and disc events fall between seconds): what parse_utc_time reads back.
-std::string format_instant(sun::UtcTime t);
+std::string format_instant(sky::UtcTime t);
 
 // The instants of `spec`; a date needs `place` (e.g. the DEM's centre), else throws
 // std::invalid_argument.
-TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sun::Observer>& place);
+TimeSeries resolve_time_series(const TimeSpec& spec, const std::optional<sky::Observer>& place);
 
 }  // namespace skylit::shading

@@ -1,11 +1,11 @@
 #include "shading/visibility_truth.h"
 
-#include "shading/quadrature.h"
+#include "shading/sh/quadrature.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace skylit::truth {
+namespace skylit::shading {
 namespace {
 
 constexpr double kHalfPi = sh::kPi / 2;
@@ -60,7 +60,7 @@ namespace {
 // Calls visit(dir, weight) for every quadrature node of the visible set.
 template <typename Visit>
 void for_each_node(const Occluders& occ, const IntegrationOptions& opt, Visit&& visit) {
-  const auto unit = quad::gauss_legendre(opt.gauss_nodes, 0.0, 1.0);
+  const auto unit = sh::gauss_legendre(opt.gauss_nodes, 0.0, 1.0);
   const double dphi = 2.0 * sh::kPi / opt.azimuths;
   std::vector<double> cuts;
   for (int k = 0; k < opt.azimuths; ++k) {
@@ -118,4 +118,4 @@ double cosine_weighted_visibility(const Occluders& occ, const glm::dvec3& normal
          sh::kPi;
 }
 
-}  // namespace skylit::truth
+}  // namespace skylit::shading

@@ -5,14 +5,14 @@
 // azimuth — the oracle for every SH and shading test (math-notes §1, §8).
 #pragma once
 
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
 
 #include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
 
-namespace skylit::truth {
+namespace skylit::shading {
 
 // Directions within half_angle of axis (unit) are occluded.
 struct Cap {
@@ -50,4 +50,4 @@ sh::Vec project_visibility(int order, const Occluders& occ, const IntegrationOpt
 // (sky only above the horizontal) pass a horizon clamped at 0.
 double cosine_weighted_visibility(const Occluders& occ, const glm::dvec3& normal, int azimuths = 2048);
 
-}  // namespace skylit::truth
+}  // namespace skylit::shading

@@ -6,9 +6,9 @@
 #include "cli_test_util.h"
 #include "gpu_test_util.h"
 
-#include "app/bench_output.h"
-#include "app/bench_run.h"
-#include "app/svg_plot.h"
+#include "app/bench/bench_output.h"
+#include "app/bench/bench_run.h"
+#include "app/bench/svg_plot.h"
 #include "gpu/gl_context.h"
 #include "shading/quality.h"
 #include "shading/renderer.h"
@@ -176,7 +176,7 @@ TEST_F(CliBench, GpuSmokeSweepNamesItsClockAndSkipsWhatTheGpuLacks) {
 }
 
 // A backend whose n-th computation takes n ms and which lacks B-spline wedges.
-class ScriptedSource final : public skylit::app::TimingSource {
+class ScriptedSource final : public skylit::app::bench::TimingSource {
  public:
   std::string_view backend() const override { return "scripted"; }
   std::string clock() const override { return "script"; }
@@ -185,12 +185,12 @@ class ScriptedSource final : public skylit::app::TimingSource {
     return std::nullopt;
   }
   skylit::shading::ProductBands compute(const skylit::terrain::HeightField& field, skylit::shading::Product,
-                                        const skylit::shading::ProductOptions&, skylit::app::FrameTime& t) override {
+                                        const skylit::shading::ProductOptions&, skylit::app::bench::FrameTime& t) override {
     t.host_ms = t.wall_ms = static_cast<double>(++calls);
     return {field.width, field.height, 1, std::vector<float>(field.size(), 0.5f), {"x"}};
   }
-  skylit::app::ClockedTimes frame_times(const std::vector<skylit::app::FrameTime>& runs) const override {
-    skylit::app::ClockedTimes t{"script", {}};
+  skylit::app::bench::ClockedTimes frame_times(const std::vector<skylit::app::bench::FrameTime>& runs) const override {
+    skylit::app::bench::ClockedTimes t{"script", {}};
     for (const auto& r : runs) t.ms.push_back(r.host_ms);
     return t;
   }
@@ -233,8 +233,8 @@ TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
 // settings compute the same thing, and a march never lends its skyview to a sweep.
 TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
   using namespace skylit::app;
-  using skylit::shading::HorizonMethod;
-  const skylit::shading::MarchOptions d;
+  using skylit::horizon::HorizonMethod;
+  const skylit::horizon::MarchOptions d;
   EXPECT_EQ(sweep_settings("smoke").size(), 3u);
   EXPECT_EQ(sweep_settings("default").size(), 32u);
   EXPECT_EQ(sweep_settings("full").size(), 945u);
@@ -252,7 +252,7 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
         EXPECT_EQ(s.subsample, 1) << s.label();  // the sweep does not sub-sample
         // Presets carry the march's knobs for the fields the sweep cannot take (high: k_v 8).
         EXPECT_TRUE(s.preset || (s.k_v == d.k_v && s.level_offset == d.level_offset && s.smooth_max == d.smooth_max &&
-                                 s.levels == skylit::shading::level_sampling(d)))
+                                 s.levels == skylit::horizon::level_sampling(d)))
             << s.label();
         EXPECT_NE(s.label().find(" K" + std::to_string(s.near_steps) + " L" + std::to_string(s.sweep_lines)),
                   std::string::npos)
@@ -292,13 +292,13 @@ TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
 }
 
 TEST(GpuTimer, MissingWhenItReadsZeroAgainstTheWallClock) {
-  using skylit::app::FrameTime;
+  using skylit::app::bench::FrameTime;
   const std::vector<FrameTime> llvmpipe = {{10, 10, 0.0}, {12, 12, 0.0}, {11, 11, 0.001}};
   const std::vector<FrameTime> device = {{10, 10, 2.0}, {12, 12, 2.5}, {11, 11, 2.2}};
   const std::vector<FrameTime> host_only = {{10, 10, std::nullopt}};
-  EXPECT_TRUE(skylit::app::gpu_timer_missing(llvmpipe));
-  EXPECT_FALSE(skylit::app::gpu_timer_missing(device));
-  EXPECT_TRUE(skylit::app::gpu_timer_missing(host_only));
+  EXPECT_TRUE(skylit::app::bench::gpu_timer_missing(llvmpipe));
+  EXPECT_FALSE(skylit::app::bench::gpu_timer_missing(device));
+  EXPECT_TRUE(skylit::app::bench::gpu_timer_missing(host_only));
 }
 
 TEST(QualityPresets, ParseApplyAndOrder) {
@@ -336,8 +336,8 @@ TEST(BenchTiming, PipelinesDifferWhereSettingsDiffer) {
 
 TEST(ParetoFront, KeepsOnlyUndominatedPointsFastestFirst) {
   // (ms, error): 1 is dominated by 0, 3 by 2; ties in time keep the lower error.
-  const std::vector<skylit::app::PlotPoint> points = {{10, 5}, {20, 6}, {30, 2}, {40, 2}, {30, 3}, {50, 1}};
-  EXPECT_EQ(skylit::app::pareto_front(points), (std::vector<std::size_t>{0, 2, 5}));
+  const std::vector<skylit::app::bench::PlotPoint> points = {{10, 5}, {20, 6}, {30, 2}, {40, 2}, {30, 3}, {50, 1}};
+  EXPECT_EQ(skylit::app::bench::pareto_front(points), (std::vector<std::size_t>{0, 2, 5}));
 }
 
 }  // namespace

@@ -5,9 +5,9 @@
 #include "cli_test_util.h"
 #include "terrain_test_util.h"
 
-#include "shading/atmosphere.h"
-#include "shading/sun_disc.h"
-#include "shading/sun_position.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/sun_disc.h"
+#include "shading/sky/sun_position.h"
 #include "terrain/geolocation.h"
 
 #include <gdal_priv.h>
@@ -112,7 +112,7 @@ TEST(CliLighting, ShadowProductBehindAWallWithGdaldemAngles) {
   ASSERT_EQ(r.status, 0) << r.out;
   const Raster s = read_output(out);
   ASSERT_EQ(s.bands, 1);
-  EXPECT_NEAR(s.at(0, i, c), skylit::shading::sun_disc_fraction(e, sigma, 0.0), 2e-3);
+  EXPECT_NEAR(s.at(0, i, c), skylit::sky::sun_disc_fraction(e, sigma, 0.0), 2e-3);
   EXPECT_EQ(s.at(0, 30, 2), 1.0f);  // north of the wall's end: open
   EXPECT_EQ(s.at(0, 12, c), 0.0f);  // close behind it: full shadow
   // The long spellings are the same option.
@@ -156,7 +156,7 @@ TEST(CliLighting, TimeUsesTheDemsCentreAndShadowsMoveWithTheSun) {
   const std::string irr = " -p irradiance --azimuths 8 -q --sky preetham --time ";
   ASSERT_EQ(run_skylit("shade " + wall + " -o " + e1 + irr + "2026-06-21T13:00:00-07:00").status, 0);
   ASSERT_EQ(run_skylit("shade " + wall + " -o " + e2 + irr + "2026-06-21T19:00:00-07:00").status, 0);
-  const auto sun = skylit::sun::solar_position(skylit::sun::parse_utc_time("2026-06-21T20:00:00Z"),
+  const auto sun = skylit::sky::solar_position(skylit::sky::parse_utc_time("2026-06-21T20:00:00Z"),
                                                {place->latitude_deg, place->longitude_deg, 0.0});
   const double el = sun.apparent_elevation_deg * kDeg;
   const double open = skylit::sky::esra_diffuse_horizontal(el, 3.0) + skylit::sky::broadband_dni(el, 3.0) * std::sin(el);

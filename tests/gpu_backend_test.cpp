@@ -1,4 +1,4 @@
-// `skylit shade --backend gpu|auto|reference` end to end (app/backend.cpp): the gpu
+// `skylit shade --backend gpu|auto|reference` end to end (app/shade/backend.cpp): the gpu
 // backend writes the same products as the reference (tolerances of
 // gpu_products_test), `auto` is the default and falls back to the reference where no
 // GL 4.5 context exists, and `--backend gpu` without one fails with one clear line.

@@ -19,7 +19,7 @@
 #include "gpu/gl_context.h"
 #include "gpu/shader_source.h"
 #include "gpu/timer.h"
-#include "shading/wedge.h"
+#include "shading/sh/wedge.h"
 
 namespace skylit::gpu {
 namespace {

@@ -1,8 +1,8 @@
 // GPU exact horizon and sky-view factor (GpuProductPipeline with ProductOptions::exact:
 // shaders/horizon_exact.comp, surface_products.comp) against
 //  * a double-precision march written here from the definition (DESIGN.md "Ground
-//    truth", shading/horizon_exact.h), over whole grids, edges included;
-//  * the CPU reference (shading::exact_max_elevation, shading::compute_product) on
+//    truth", shading/horizon/horizon_exact.h), over whole grids, edges included;
+//  * the CPU reference (horizon::exact_max_elevation, shading::compute_product) on
 //    texels whose rays end at the max distance before the grid edge, where the two
 //    share every sample (at the edge the CPU reference currently drops samples to
 //    rounding);
@@ -22,7 +22,7 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
-#include "shading/horizon_exact.h"
+#include "shading/horizon/horizon_exact.h"
 #include "shading/products.h"
 
 namespace skylit::gpu {
@@ -47,7 +47,7 @@ using GpuHorizonTest = testing::GpuTest;
 // One exact-march setting: W azimuths (both products) and the march itself.
 struct ExactSetting {
   int azimuths = 32;
-  shading::ExactMarch march;
+  horizon::ExactMarch march;
 };
 
 struct HorizonProducts {
@@ -86,9 +86,9 @@ HeightField synthetic_field(int w, int h, double dx, double dy) {
 // east offset scaled by dx at the ray's mid-row (linear between rows), bilinear
 // heights, curvature drop t²/(2R_eff), to max distance or the grid edge (within the
 // GPU's edge epsilon), plain max of elevation angles; −∞ if there is no sample.
-double reference_max_elevation(const HeightField& f, int i, int j, shading::Heading u,
-                               const shading::ExactMarch& m) {
-  const double eps = shading::edge_epsilon_texels(f);
+double reference_max_elevation(const HeightField& f, int i, int j, horizon::Heading u,
+                               const horizon::ExactMarch& m) {
+  const double eps = horizon::edge_epsilon_texels(f);
   const double per_m = std::max(std::abs(u.east) / f.dx(j), std::abs(u.north) / f.dy);
   const double step = m.step_texels / per_m;
   const double d_max = m.max_distance_m > 0 ? m.max_distance_m : std::hypot(f.width * f.mean_dx(), f.height * f.dy);
@@ -117,7 +117,7 @@ double reference_max_elevation(const HeightField& f, int i, int j, shading::Head
   return best;
 }
 
-using MarchFn = double (*)(const HeightField&, int, int, shading::Heading, const shading::ExactMarch&);
+using MarchFn = double (*)(const HeightField&, int, int, horizon::Heading, const horizon::ExactMarch&);
 
 // The Horizon and Svf cases of shading::compute_product (reference_pipeline.cpp) in
 // double precision around a given march: horizon floored at the receiver's ground
@@ -134,7 +134,7 @@ HorizonProducts cpu_products(const HeightField& f, const ExactSetting& o, MarchF
       double sin_sum = 0.0;
       for (int k = 0; k < w; ++k) {
         const double az = 2 * std::numbers::pi * k / w;
-        shading::Heading u{std::sin(az), std::cos(az)};
+        horizon::Heading u{std::sin(az), std::cos(az)};
         if (k * 4 % w == 0) u = {std::round(u.east), std::round(u.north)};  // N, E, S, W
         sigma[k] = march(f, i, j, u, o.march);
         const double per_m = std::max(std::abs(u.east) / f.dx(j), std::abs(u.north) / f.dy);
@@ -222,7 +222,7 @@ TEST_F(GpuHorizonTest, MatchesDefinitionWithMaxDistanceAndNoCurvature) {
 }
 
 // Geographic DEM: dx shrinks toward the north (row 0), interpolated at the ray's
-// mid-row, as in shading/horizon_ray.h.
+// mid-row, as in shading/horizon/horizon_ray.h.
 HeightField geographic_field() {
   HeightField field = synthetic_field(64, 72, 25.0, 30.0);
   for (int j = 0; j < field.height; ++j)
@@ -249,8 +249,8 @@ TEST_F(GpuHorizonTest, NodataTexelsAreNaN) {
 // 230 m reaches at most 230/20 + 1 texels: a margin of 13 keeps every sample inside.
 TEST_F(GpuHorizonTest, MatchesCpuReferenceMarchInside) {
   const HeightField field = synthetic_field(72, 64, 20.0, 20.0);
-  expect_matches_cpu(field, exact_options(16, 230.0, true), shading::exact_max_elevation, 13, "CPU reference");
-  expect_matches_cpu(geographic_field(), exact_options(8, 230.0, true), shading::exact_max_elevation, 9,
+  expect_matches_cpu(field, exact_options(16, 230.0, true), horizon::exact_max_elevation, 13, "CPU reference");
+  expect_matches_cpu(geographic_field(), exact_options(8, 230.0, true), horizon::exact_max_elevation, 9,
                      "CPU reference, per-row dx");
 }
 

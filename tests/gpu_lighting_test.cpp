@@ -22,12 +22,12 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
-#include "shading/sun_light.h"
-#include "shading/reference_pipeline.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/reference_pipeline.h"
 #include "shading/shading_modes.h"
-#include "shading/sky_model.h"
+#include "shading/sky/sky_model.h"
+#include "shading/sun_light.h"
 #include "terrain/dem_reader.h"
 #include "terrain/synthetic.h"
 
@@ -203,7 +203,7 @@ TEST_F(GpuLightingTest, SweptSunAndSkyMatchReference) {
   const Fields f;
   for (double elevation : {10.0, 45.0}) {
     ProductOptions o = lit_options(135.0, elevation, "uniform");
-    o.march.method = shading::HorizonMethod::Sweep;
+    o.march.method = horizon::HorizonMethod::Sweep;
     ASSERT_TRUE(shading::sun_sweeps(f.synthetic, shading::sun_shadow_options(o)));
     const std::string label = "swept, sun 135/" + std::to_string(static_cast<int>(elevation));
     const ProductBands g = expect_lit_matches(Product::Shadow, o, f.synthetic, f.dem_or_null(), label);

@@ -5,7 +5,7 @@
 //
 // Tolerances (float32 GPU vs double CPU): tests/gpu_tolerances.h, derivations there.
 // Every texel is compared, edges included: both paths snap cardinal headings to exact
-// zeros and count samples within shading::edge_epsilon_texels of the last row/column.
+// zeros and count samples within horizon::edge_epsilon_texels of the last row/column.
 // Runs on Mesa llvmpipe where there is no GPU.
 #include "gpu_test_util.h"
 #include "gpu_tolerances.h"
@@ -25,8 +25,8 @@
 
 #include "gpu/gl_context.h"
 #include "gpu/gpu_pipeline.h"
-#include "shading/azimuth.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
 #include "terrain/dem_reader.h"
@@ -173,7 +173,7 @@ TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
   expect_product_matches(pipeline, projected, "one dx again");
 }
 
-// The sweep (shading/horizon_sweep.h: horizon_sweep.comp, surface_products.comp SWEPT) against
+// The sweep (shading/horizon/horizon_sweep.h: horizon_sweep.comp, surface_products.comp SWEPT) against
 // the reference's sweep: every product on a projected field with dx ≠ dy (both
 // dominant axes, all quadrants), near steps and lines varied; a geographic field and
 // sub-sampling fall back to the march in both.
@@ -181,7 +181,7 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
   HeightField field = synthetic_field();
   field.dy = 21.0;  // rays of other slopes in texel units than with square texels
   ProductOptions o = default_options();
-  o.march.method = shading::HorizonMethod::Sweep;
+  o.march.method = horizon::HorizonMethod::Sweep;
   for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded}) {
     const GpuProductPipeline pipeline(p, o);
     const ProductBands gpu = expect_product_matches(pipeline, field, "sweep");
@@ -207,7 +207,7 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
 }
 
 // The far-slope codes themselves, GPU (float) against the reference (double): both round
-// x = s/(1 + |s|) down to a code (shading::encode_far_slope), so they differ only where
+// x = s/(1 + |s|) down to a code (horizon::encode_far_slope), so they differ only where
 // the two roundings of the slope straddle a code boundary — by one code — and "none"
 // (no far sample) must agree exactly. Products compare within tolerances far wider than a
 // code (6e-5 rad), so only this test would see, say, rounding to nearest on the GPU.
@@ -215,7 +215,7 @@ TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
   HeightField field = synthetic_field();
   field.dy = 21.0;
   ProductOptions o = default_options();
-  o.march.method = shading::HorizonMethod::Sweep;
+  o.march.method = horizon::HorizonMethod::Sweep;
   o.march.azimuths = 8;
   const GpuProductPipeline pipeline(Product::Svf, o);
   pipeline.compute(field);
@@ -224,11 +224,11 @@ TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
   std::size_t equal = 0, finite = 0;
   int worst = 0;
   for (int k = 0; k < 8; ++k) {
-    const auto cpu = shading::sweep_far_slopes(field, shading::heading_from_geographic(shading::band_azimuth(k, 8)),
+    const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, 8)),
                                                o.march);
     for (std::size_t t = 0; t < field.size(); ++t) {
       const int g = gpu[k * field.size() + t], c = cpu[t];
-      if (g == shading::kFarCodeNone || c == shading::kFarCodeNone) {
+      if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
         EXPECT_EQ(g, c) << "band " << k << " texel " << t;
         continue;
       }
@@ -268,7 +268,7 @@ TEST_F(GpuProductsTest, SweepBeyondTheTextureLimitFailsClearly) {
 TEST_F(GpuProductsTest, MarchAndShadingVariants) {
   const HeightField field = synthetic_scene(72, 64, 11);
   ProductOptions march = default_options();
-  march.march.method = shading::HorizonMethod::March;
+  march.march.method = horizon::HorizonMethod::March;
   ProductOptions o = march;
   o.march.curvature.enabled = false;
   o.march.k_v = 2;

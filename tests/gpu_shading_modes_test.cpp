@@ -38,10 +38,10 @@
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
-#include "shading/sky_cie.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
-#include "shading/sky_model.h"
-#include "shading/wedge.h"
+#include "shading/sky/sky_cie.h"
+#include "shading/sky/sky_model.h"
 #include "terrain/synthetic.h"
 
 namespace skylit::gpu {

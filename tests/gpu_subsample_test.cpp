@@ -8,7 +8,7 @@
 // Tolerances: gpu_products_test.cpp's and gpu_lighting_test.cpp's float32 bounds (derived
 // there); the bilinear mix adds float rounding of ~1e-7 rad, far below them. The GPU and
 // the CPU take the same fall-back decisions: both find −∞ by the shared edge rules
-// (shading/horizon_ray.h) and nodata from the same mask.
+// (shading/horizon/horizon_ray.h) and nodata from the same mask.
 #include "gpu_test_util.h"
 #include "gpu_tolerances.h"
 

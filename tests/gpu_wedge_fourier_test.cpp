@@ -2,7 +2,7 @@
 // against sh::WedgeOperator::assemble on random slices: the same sum regrouped, so
 // they agree to double rounding for every interpolation, order and W.
 #include "gpu/wedge_fourier.h"
-#include "shading/sh_basis.h"
+#include "shading/sh/sh_basis.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // closed forms on analytic scenes (horizon_scenes.h) and against the visibility oracle.
 #include "horizon_scenes.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_exact.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/products.h"
-#include "shading/surface_normals.h"
 #include "shading/visibility_truth.h"
 
 #include <glm/geometric.hpp>
@@ -15,7 +15,7 @@
 #include <numbers>
 #include <vector>
 
-namespace skylit::shading {
+namespace skylit::horizon {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -74,9 +74,9 @@ TEST(SkyviewSlice, MatchesVisibilityOracleWithTiltedNormal) {
   const int w = 4096;
   std::vector<double> sigma(w);
   for (int k = 0; k < w; ++k) sigma[k] = horizon_geo(band_azimuth(k, w));
-  truth::Occluders occ;
+  shading::Occluders occ;
   occ.horizon = [&](double phi) { return std::max(0.0, horizon_geo(geographic_from_math(phi))); };
-  EXPECT_NEAR(skyview_from_horizon(sigma, n), truth::cosine_weighted_visibility(occ, n, 4096), 2e-6);
+  EXPECT_NEAR(skyview_from_horizon(sigma, n), shading::cosine_weighted_visibility(occ, n, 4096), 2e-6);
 }
 
 TEST(SkyviewSlice, OpenFlatAndTiltedGround) {
@@ -176,4 +176,4 @@ TEST(ExactHorizon, NoSampleOutsideTheGrid) {
 }
 
 }  // namespace
-}  // namespace skylit::shading
+}  // namespace skylit::horizon

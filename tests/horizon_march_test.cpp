@@ -3,11 +3,11 @@
 // analytic scenes against the closed forms of horizon_scenes.h.
 #include "horizon_scenes.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_exact.h"
-#include "shading/horizon_march.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_march.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/products.h"
-#include "shading/surface_normals.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <numbers>
 #include <vector>
 
-namespace skylit::shading {
+namespace skylit::horizon {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -235,12 +235,12 @@ TEST(HorizonMarch, MaxDistanceIsHonoured) {
 TEST(HorizonMarch, ExitHeightBoundSkipsNodataAndNeverUndercuts) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<float> heights = {120.0f, nan, 2500.5f, -30.0f};
-  const double bound = shading::march_exit_height_bound(heights);
+  const double bound = horizon::march_exit_height_bound(heights);
   EXPECT_GT(bound, 2500.5);
   EXPECT_LT(bound, 2500.5 + 1.0);
   const std::vector<float> none = {nan, nan};
-  EXPECT_EQ(shading::march_exit_height_bound(none), std::numeric_limits<double>::infinity());
-  EXPECT_EQ(shading::march_exit_height_bound(std::span<const float>()), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(horizon::march_exit_height_bound(none), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(horizon::march_exit_height_bound(std::span<const float>()), std::numeric_limits<double>::infinity());
 }
 
 // The early exit (MarchExitSlack) must return exactly what the full march returns, on
@@ -278,4 +278,4 @@ TEST(HorizonMarch, EarlyExitGivesExactlyTheFullMarch) {
 }
 
 }  // namespace
-}  // namespace skylit::shading
+}  // namespace skylit::horizon

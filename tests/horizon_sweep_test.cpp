@@ -5,9 +5,9 @@
 // elsewhere, edge cases, and the reference pipeline's use of it.
 #include "horizon_scenes.h"
 
-#include "shading/horizon_exact.h"
-#include "shading/horizon_ray.h"
-#include "shading/horizon_sweep.h"
+#include "shading/horizon/horizon_exact.h"
+#include "shading/horizon/horizon_ray.h"
+#include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
 #include "terrain/dem_reader.h"
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace skylit::shading {
+namespace skylit::horizon {
 namespace {
 
 using terrain::HeightField;
@@ -529,4 +529,4 @@ TEST(HorizonSweep, ReferencePipelineSweepsWhereItAppliesAndMarchesElsewhere) {
 }
 
 }  // namespace
-}  // namespace skylit::shading
+}  // namespace skylit::horizon

@@ -6,9 +6,9 @@
 
 #include "shading/lighting.h"
 #include "shading/products.h"
-#include "shading/sky_sh.h"
-#include "shading/sun_disc.h"
-#include "shading/sun_position.h"
+#include "shading/sky/sky_sh.h"
+#include "shading/sky/sun_disc.h"
+#include "shading/sky/sun_position.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 // Denver, Colorado (NREL's Solar Radiation Research Laboratory is at 39.742 N, 105.18 W).
-const sun::Observer kDenver{39.7392, -104.9903, 0.0};
+const sky::Observer kDenver{39.7392, -104.9903, 0.0};
 
 ProductOptions lit_options(const ResolvedLighting& l) {
   ProductOptions o;
@@ -95,7 +95,7 @@ TEST(Lighting, TimeAndPlaceGiveTheSolarPosition) {
   LightingRequest r;
   r.time = "2026-06-21T09:30:00-06:00";
   const ResolvedLighting l = resolve_lighting(r, kDenver);
-  const sun::SolarPosition p = sun::solar_position(sun::parse_utc_time("2026-06-21T15:30:00Z"), kDenver);
+  const sky::SolarPosition p = sky::solar_position(sky::parse_utc_time("2026-06-21T15:30:00Z"), kDenver);
   EXPECT_NEAR(l.sun_azimuth_deg, p.azimuth_deg, 1e-9);
   EXPECT_NEAR(l.sun_elevation_deg, p.apparent_elevation_deg, 1e-9);
   EXPECT_NEAR(sky::azimuth_of(l.lighting.sun.direction), p.azimuth_deg * kDeg, 1e-9);
@@ -106,7 +106,7 @@ TEST(Lighting, TimeAndPlaceGiveTheSolarPosition) {
   const ResolvedLighting cape = resolve_lighting(r, kDenver);
   EXPECT_EQ(cape.sun_azimuth_deg, 10.0);
   EXPECT_NEAR(cape.sun_elevation_deg,
-              sun::solar_position(sun::parse_utc_time(r.time), {-33.9, 18.4, 0.0}).apparent_elevation_deg, 1e-9);
+              sky::solar_position(sky::parse_utc_time(r.time), {-33.9, 18.4, 0.0}).apparent_elevation_deg, 1e-9);
 }
 
 TEST(Lighting, OvercastAndMapSkiesHaveNoDefaultSun) {
@@ -128,7 +128,7 @@ TEST(Lighting, OvercastAndMapSkiesHaveNoDefaultSun) {
 // widened by 2.5% (Denver's thinner air, ~840 hPa, would raise DNI further).
 TEST(LitProducts, FlatGroundIrradianceAtNoonIsTheClearSkyGlobalHorizontal) {
   LightingRequest r;
-  r.time = sun::format_utc_time(sun::sun_events(sun::parse_utc_time("2026-06-21T12:00:00-06:00"), kDenver).solar_noon);
+  r.time = sky::format_utc_time(sky::sun_events(sky::parse_utc_time("2026-06-21T12:00:00-06:00"), kDenver).solar_noon);
   const auto flat = test::make_field(33, 33, 30.0);
   for (const char* sky_name : {"uniform", "preetham", "cie:12"}) {
     r.sky = sky_name;

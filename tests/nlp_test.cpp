@@ -1,9 +1,9 @@
 // NLP basis and slice vectors: closed forms against Gauss–Legendre quadrature
 // at several orders, the printed order-4 table (math-notes T2), and the cap ZH
 // (math-notes §2, §4) by an independent quadrature and closed form.
-#include "shading/nlp.h"
-#include "shading/quadrature.h"
-#include "shading/sh_basis.h"
+#include "shading/sh/nlp.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_basis.h"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +23,7 @@ const double kSigmas[] = {-1.5, -0.7, -0.2, 0.0, 0.1, 0.5, 1.0, 1.3, 1.5, 1.5707
 
 // o_l = ∫_{−1}^{sin σ} P̂_l(z) dz by GL exact for degree l, with P̂ from sh::legendre.
 double occlusion_by_quadrature(int l, double sigma) {
-  const auto gl = quad::gauss_legendre(l / 2 + 2, -1.0, std::sin(sigma));
+  const auto gl = sh::gauss_legendre(l / 2 + 2, -1.0, std::sin(sigma));
   double s = 0.0;
   for (std::size_t q = 0; q < gl.nodes.size(); ++q)
     s += gl.weights[q] * std::sqrt((2 * l + 1) / 2.0) * sh::legendre(l, gl.nodes[q]);
@@ -34,7 +34,7 @@ double occlusion_by_quadrature(int l, double sigma) {
 
 TEST(NlpBasis, OrthonormalOnMinusOneOne) {
   const int order = 20;
-  const auto gl = quad::gauss_legendre(order + 1);
+  const auto gl = sh::gauss_legendre(order + 1);
   std::vector<double> gram(order * order, 0.0);
   for (std::size_t q = 0; q < gl.nodes.size(); ++q) {
     const auto p = sh::nlp_basis(order, gl.nodes[q]);
@@ -130,7 +130,7 @@ TEST(NlpVisibility, TimesSqrt2PiIsTheCapZonalHarmonic) {
     const auto v = sh::nlp_visibility(order, sigma);
     // Cap {e > σ} = {θ ≤ α}, α = π/2 − σ, c = cos α = sin σ.
     const double c = std::sin(sigma);
-    const auto gl = quad::gauss_legendre(order + 2, c, 1.0);
+    const auto gl = sh::gauss_legendre(order + 2, c, 1.0);
     for (int l = 0; l < order; ++l) {
       // Projection onto y_l0 by quadrature: 2π ∫_c^1 K_l0 P_l(z) dz.
       double proj = 0.0;

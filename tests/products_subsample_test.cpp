@@ -2,7 +2,7 @@
 // raw horizons marched at the coarse texels (0, s, 2s, … and the last index per axis),
 // bilinear elsewhere, a texel's own march where a needed coarse sample is nodata or −∞.
 // Checked against independent derivations: the coarse grid restated here (not
-// shading::SubsampleAxis), bilinear mixes of the s = 1 `horizon` product computed in the
+// horizon::SubsampleAxis), bilinear mixes of the s = 1 `horizon` product computed in the
 // test, −∞ samples found with HorizonMarcher directly, and the closed forms of a tilted
 // plane.
 //
@@ -14,8 +14,8 @@
 // SubsampledProductsStayCloseToFullResolution bounds them at ≈ 1.3× those.
 #include "horizon_scenes.h"
 
-#include "shading/azimuth.h"
-#include "shading/horizon_march.h"
+#include "shading/horizon/azimuth.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/products.h"
 #include "terrain/analytic_scenes.h"
 #include "terrain/synthetic.h"

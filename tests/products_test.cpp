@@ -2,7 +2,7 @@
 // and every product against closed forms on analytic scenes, default and exact.
 #include "horizon_scenes.h"
 
-#include "shading/horizon_march.h"
+#include "shading/horizon/horizon_march.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
 

@@ -1,7 +1,7 @@
 // SH basis: orthonormality by exact quadrature, conventions against hard-coded
 // values (google/spherical-harmonics, math-notes §0), Gauss–Legendre accuracy.
-#include "shading/quadrature.h"
-#include "shading/sh_basis.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_basis.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ using namespace skylit;
 
 TEST(GaussLegendre, IntegratesPolynomialsExactly) {
   for (int n : {1, 2, 5, 16, 64}) {
-    const auto r = quad::gauss_legendre(n, -1.0, 2.0);
+    const auto r = sh::gauss_legendre(n, -1.0, 2.0);
     for (int deg = 0; deg <= 2 * n - 1; ++deg) {
       double s = 0;
       for (int i = 0; i < n; ++i) s += r.weights[i] * std::pow(r.nodes[i], deg);
@@ -26,7 +26,7 @@ TEST(GaussLegendre, IntegratesPolynomialsExactly) {
 
 TEST(ShBasis, OrthonormalUpToOrder8) {
   for (int order : {2, 4, 8}) {
-    const auto rule = quad::sphere_product_rule(order + 1, 2 * order + 1);
+    const auto rule = sh::sphere_product_rule(order + 1, 2 * order + 1);
     const int nc = sh::num_coeffs(order);
     std::vector<double> gram(nc * nc, 0.0);
     sh::Vec y(nc);
@@ -93,8 +93,8 @@ TEST(ShBasis, ProjectReconstructRoundTrip) {
   const int order = 6;
   sh::Vec c(sh::num_coeffs(order));
   for (std::size_t i = 0; i < c.size(); ++i) c[i] = std::sin(1.7 * i + 0.3);
-  const auto rule = quad::sphere_product_rule(order + 1, 2 * order + 1);
-  const auto back = quad::project(order, rule, [&](const glm::dvec3& d) { return sh::reconstruct(c, d); });
+  const auto rule = sh::sphere_product_rule(order + 1, 2 * order + 1);
+  const auto back = sh::project(order, rule, [&](const glm::dvec3& d) { return sh::reconstruct(c, d); });
   for (std::size_t i = 0; i < c.size(); ++i) EXPECT_NEAR(back[i], c[i], 1e-13);
 }
 

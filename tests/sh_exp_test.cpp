@@ -2,12 +2,12 @@
 // closed form (modified spherical Bessel) for T1, a long Taylor series in the
 // product algebra for T2, math-notes table T6 for the OL fit, T2 for HYB on single
 // spheres, and the guards on hard cases (no NaN/Inf, DC ≥ 0, float32 and double).
-#include "shading/hyb_table.h"
-#include "shading/quadrature.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
-#include "shading/sh_rotation.h"
-#include "shading/sphere_blocker.h"
+#include "shading/blockers/sphere_blocker.h"
+#include "shading/sh/hyb_table.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
+#include "shading/sh/sh_rotation.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -52,9 +52,9 @@ sh::Vec taylor_series(const sh::Vec& f, int terms) {
 
 // Spheres of a hard case: centres in a 35° cone about +z, d ∈ [1.5, 6], r/d ∈ [0.15, 0.6];
 // or all coincident.
-std::vector<sh::Sphere> scene(int count, bool coincident, std::uint64_t seed) {
+std::vector<blockers::Sphere> scene(int count, bool coincident, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::vector<sh::Sphere> s;
+  std::vector<blockers::Sphere> s;
   const double cone = 35.0 * kPi / 180;
   for (int i = 0; i < count; ++i) {
     if (coincident && i > 0) {
@@ -94,8 +94,8 @@ TEST(ShExp, DcIsolationIsExact) {
     fhat[0] = 0;
     const double ec = std::exp(f[0] / kSqrt4Pi);  // √(4π), not √(4/π)
     // T1: the plain projection of exp(f̃), no isolation inside.
-    const auto rule = quad::sphere_product_rule(48, 96);
-    const sh::Vec direct = quad::project(order, rule, [&](const glm::dvec3& d) { return std::exp(sh::reconstruct(f, d)); });
+    const auto rule = sh::sphere_product_rule(48, 96);
+    const sh::Vec direct = sh::project(order, rule, [&](const glm::dvec3& d) { return std::exp(sh::reconstruct(f, d)); });
     sh::Vec iso = sh::exp_pointwise(fhat, 48, 96);
     for (double& x : iso) x *= ec;
     EXPECT_LT(rel_diff(iso, direct), 1e-13);
@@ -204,11 +204,11 @@ TEST(ShExp, HardCasesStayFiniteWithNonNegativeDc) {
     for (bool coincident : {false, true})
       for (double eps : eps_list)
         for (bool ratio : {false, true}) {
-          sh::BlockerOptions bo;
+          blockers::BlockerOptions bo;
           bo.epsilon = eps;
           bo.ratio_attenuation = ratio;
           sh::Vec f(16, 0.0);
-          sh::accumulate_log_visibility(scene(count, coincident, 1234 + count), {0, 0, 0}, {0, 0, 1}, bo, f);
+          blockers::accumulate_log_visibility(scene(count, coincident, 1234 + count), {0, 0, 0}, {0, 0, 1}, bo, f);
           std::vector<float> ff(f.begin(), f.end());
           for (int guard = 0; guard < 4; ++guard) {
             sh::HybOptions opt;
@@ -261,10 +261,10 @@ TEST(ShExp, ExtremeFiniteInputsStayFinite) {
 
 TEST(ShExp, PlainFloatHybOverflowsWhereTheGuardDoesNot) {
   // math-notes T7c: plain float32 HYB gives NaN once c = f_0/√(4π) ≲ −103.
-  sh::BlockerOptions bo;
+  blockers::BlockerOptions bo;
   bo.epsilon = 0.001;
   sh::Vec f(16, 0.0);
-  sh::accumulate_log_visibility(scene(400, false, 99), {0, 0, 0}, {0, 0, 1}, bo, f);
+  blockers::accumulate_log_visibility(scene(400, false, 99), {0, 0, 0}, {0, 0, 1}, bo, f);
   ASSERT_LT(f[0] / kSqrt4Pi, -103);
   std::vector<float> ff(f.begin(), f.end()), out(16);
   sh::HybOptions plain;

@@ -1,9 +1,9 @@
 // SH rotations: the general 3D rotation against pointwise evaluation at the
 // rotated direction, composition, agreement with rotate_z and rotate_zh, band
 // energy; rotate_z against the projection of f(φ − α).
-#include "shading/quadrature.h"
-#include "shading/sh_basis.h"
-#include "shading/sh_rotation.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_basis.h"
+#include "shading/sh/sh_rotation.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -142,8 +142,8 @@ TEST(RotateZ, EqualsProjectionOfShiftedFunction) {
   std::mt19937 rng(13);
   const auto f = random_vector(6, rng);
   const double alpha = 0.83;
-  const auto rule = quad::sphere_rule_for_order(6);
-  const auto shifted = quad::project(6, rule, [&](const glm::dvec3& d) {
+  const auto rule = sh::sphere_rule_for_order(6);
+  const auto shifted = sh::project(6, rule, [&](const glm::dvec3& d) {
     const double phi = std::atan2(d.y, d.x) - alpha, rxy = std::hypot(d.x, d.y);
     return sh::reconstruct(f, {rxy * std::cos(phi), rxy * std::sin(phi), d.z});
   });

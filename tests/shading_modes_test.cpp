@@ -2,17 +2,17 @@
 // brute force ∫ L·V·g dω by visibility_truth::integrate (exact in elevation per
 // azimuth, split at the lobe's kink), and the table against closed forms.
 // Tolerances are the measured errors (docs/numerics.md §3) with margin.
+#include "shading/blockers/sphere_blocker.h"
 #include "shading/brdf.h"
-#include "shading/quadrature.h"
 #include "shading/reference_pipeline.h"
-#include "shading/sh_exp.h"
-#include "shading/sh_product.h"
-#include "shading/sh_rotation.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_product.h"
+#include "shading/sh/sh_rotation.h"
+#include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
 #include "shading/sky_brdf_table.h"
-#include "shading/sphere_blocker.h"
 #include "shading/visibility_truth.h"
-#include "shading/wedge.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -35,7 +35,7 @@ namespace {
 const shading::LobeQuadrature kTestQuad{32, 12};
 
 const sh::Vec& test_sky_sh() {
-  static const sh::Vec v = quad::project_smooth(kOrder, shading::test_sky_radiance, 64, 128);
+  static const sh::Vec v = sh::project_smooth(kOrder, shading::test_sky_radiance, 64, 128);
   return v;
 }
 double band_limited_sky(const glm::dvec3& d) { return sh::reconstruct(test_sky_sh(), d); }
@@ -51,18 +51,18 @@ const shading::SkyBrdfTable& full_sky_table(double r) {
   return *t;
 }
 
-double brute_force(const truth::Occluders& occ, double r, const glm::dvec3& axis, const shading::Radiance& sky) {
-  truth::IntegrationOptions io;
+double brute_force(const shading::Occluders& occ, double r, const glm::dvec3& axis, const shading::Radiance& sky) {
+  shading::IntegrationOptions io;
   io.azimuths = kAzimuths;
   io.clamped_cosine_normal = axis;
-  return truth::integrate(
+  return shading::integrate(
       occ, [&](const glm::dvec3& d) { return sky(d) * shading::lobe_profile(r, glm::dot(d, axis)); }, io);
 }
 
-sh::Vec exact_visibility(const truth::Occluders& occ) {
-  truth::IntegrationOptions io;
+sh::Vec exact_visibility(const shading::Occluders& occ) {
+  shading::IntegrationOptions io;
   io.azimuths = kAzimuths;
-  return truth::project_visibility(kOrder, occ, io);
+  return shading::project_visibility(kOrder, occ, io);
 }
 
 glm::dvec3 dir_deg(double elevation, double azimuth) {
@@ -75,24 +75,24 @@ double hf_horizon(double phi) {
 }
 
 // Spheres over flat ground, caps toward the sun side of the sky.
-std::vector<sh::Sphere> spheres(int count) {
-  const sh::Sphere all[] = {{2.0 * dir_deg(62, 35), 0.8}, {3.0 * dir_deg(50, 60), 0.9}, {4.0 * dir_deg(75, 10), 1.2},
+std::vector<blockers::Sphere> spheres(int count) {
+  const blockers::Sphere all[] = {{2.0 * dir_deg(62, 35), 0.8}, {3.0 * dir_deg(50, 60), 0.9}, {4.0 * dir_deg(75, 10), 1.2},
                             {2.5 * dir_deg(45, 25), 0.5}, {5.0 * dir_deg(66, 80), 2.0}, {1.8 * dir_deg(80, 120), 0.4},
                             {3.5 * dir_deg(55, 5), 1.0},  {6.0 * dir_deg(40, 45), 1.5}, {2.2 * dir_deg(70, 55), 0.6},
                             {4.5 * dir_deg(58, 100), 1.1}};
   return {all, all + count};
 }
 
-truth::Occluders sphere_scene(int count) {
-  truth::Occluders occ;
+shading::Occluders sphere_scene(int count) {
+  shading::Occluders occ;
   occ.horizon = [](double) { return 0.0; };
   for (const auto& s : spheres(count))
     occ.caps.push_back({glm::normalize(s.centre), std::asin(std::min(1.0, s.radius / glm::length(s.centre)))});
   return occ;
 }
 
-truth::Occluders horizon_scene() {
-  truth::Occluders occ;
+shading::Occluders horizon_scene() {
+  shading::Occluders occ;
   occ.horizon = hf_horizon;
   return occ;
 }
@@ -219,7 +219,7 @@ TEST(SkyBrdfTable, NonSymmetricSkyIsProjectedPerAxis) {
 
 TEST(ShadingModes, UnoccludedTableMatchesBruteForceWithinOnePerMille) {
   // V = 1 is band-limited: only the table's interpolation and quadrature remain.
-  const truth::Occluders none;
+  const shading::Occluders none;
   const sh::Vec one = sh::constant_one(kOrder);
   for (double r : {1.0, 4.0, 16.0}) {
     const auto axes =
@@ -233,7 +233,7 @@ TEST(ShadingModes, UnoccludedTableMatchesBruteForceWithinOnePerMille) {
 }
 
 TEST(ShadingModes, UnoccludedTripleProductIsExactForTheBandLimitedSky) {
-  const truth::Occluders none;
+  const shading::Occluders none;
   const sh::Vec one = sh::constant_one(kOrder);
   for (double r : {1.0, 4.0, 16.0}) {
     const glm::dvec3 a = dir_deg(50, 77);
@@ -249,7 +249,7 @@ TEST(ShadingModes, TripleProductKernelEqualsPointwiseIntegral) {
   const sh::Vec v = exact_visibility(sphere_scene(3));
   const glm::dvec3 a = dir_deg(60, 30);
   const sh::Vec f = sh::rotate_zh(shading::lobe_zh(kOrder, 4.0), a);
-  const auto rule = quad::sphere_product_rule(8, 12);
+  const auto rule = sh::sphere_product_rule(8, 12);
   double direct = 0;
   for (std::size_t k = 0; k < rule.dirs.size(); ++k)
     direct += rule.weights[k] * sh::reconstruct(v, rule.dirs[k]) * sh::reconstruct(f, rule.dirs[k]) *
@@ -319,10 +319,10 @@ TEST(ShadingModes, LogBrdfWithSpheresIsFiniteAndRoughlyRight) {
     for (double eps : {0.05, 0.1}) {
       const auto& op = sh::wedge_operator(kOrder, 8, 32, sh::WedgeInterpolation::Linear);
       sh::Vec logv = sh::log_visibility_from_horizon(op, std::vector<double>(32, 0.0), std::log(eps));
-      sh::BlockerOptions bo;
+      blockers::BlockerOptions bo;
       bo.epsilon = eps;
       const auto balls = spheres(count);
-      EXPECT_EQ(sh::accumulate_log_visibility(balls, {0, 0, 0}, n, bo, logv), count);
+      EXPECT_EQ(blockers::accumulate_log_visibility(balls, {0, 0, 0}, n, bo, logv), count);
       const sh::Vec loglobe = shading::log_lobe_zh(kOrder, 1.0, eps);
       const double hyb = shading::shade_log_brdf(logv, test_sky_sh(), loglobe, n);
       const double t1 = shading::shade_log_brdf(logv, test_sky_sh(), loglobe, n, shading::LogExp::Pointwise);

@@ -1,8 +1,8 @@
 // Equirectangular HDR skies: an EXR with an analytic pattern written by
 // OpenImageIO in a temporary directory, read back through EnvMapSky; the
 // orientation convention, bilinear lookup, sun clamping and the rejections.
-#include "shading/sky_envmap.h"
-#include "shading/sky_sh.h"
+#include "shading/sky/sky_envmap.h"
+#include "shading/sky/sky_sh.h"
 
 #include <OpenImageIO/imageio.h>
 #include <glm/geometric.hpp>

@@ -1,11 +1,11 @@
 // Sky models and the sun: frame conventions, published values of the CIE
 // standard general sky and the Kasten–Young air mass, Preetham's model against
 // independently computed numbers, plausibility of absolute levels, no NaN.
-#include "shading/atmosphere.h"
-#include "shading/sky_cie.h"
-#include "shading/sky_model.h"
-#include "shading/sky_preetham.h"
-#include "shading/sky_sh.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/sky_cie.h"
+#include "shading/sky/sky_model.h"
+#include "shading/sky/sky_preetham.h"
+#include "shading/sky/sky_sh.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

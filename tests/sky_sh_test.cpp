@@ -1,13 +1,13 @@
 // SH projection of skies: coefficients against an independent dense midpoint
 // θ × φ quadrature, irradiance identities (√(4π/3)·L_10, clamped-cosine ZH),
 // orientation of the frame, z-rotation consistency, and windowing.
-#include "shading/sh_basis.h"
-#include "shading/sh_rotation.h"
-#include "shading/sky_cie.h"
-#include "shading/sky_model.h"
-#include "shading/sky_preetham.h"
 #include "shading/brdf.h"
-#include "shading/sky_sh.h"
+#include "shading/sh/sh_basis.h"
+#include "shading/sh/sh_rotation.h"
+#include "shading/sky/sky_cie.h"
+#include "shading/sky/sky_model.h"
+#include "shading/sky/sky_preetham.h"
+#include "shading/sky/sky_sh.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

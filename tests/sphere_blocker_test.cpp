@@ -1,9 +1,9 @@
 // Sphere blockers against independent derivations: the cap ZH closed form vs the
 // ground-truth projection (exact in elevation) and vs a quadrature in the cap's
 // own frame for rotated caps; math-notes §4 table T1; culling; accumulation.
-#include "shading/quadrature.h"
-#include "shading/sh_rotation.h"
-#include "shading/sphere_blocker.h"
+#include "shading/blockers/sphere_blocker.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_rotation.h"
 #include "shading/visibility_truth.h"
 
 #include <glm/geometric.hpp>
@@ -38,7 +38,7 @@ sh::Vec zh_to_sh(const sh::Vec& zh) {
 sh::Vec cap_projection_in_own_frame(int order, const glm::dvec3& axis, double alpha) {
   const glm::dvec3 helper = std::abs(axis.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 u = glm::normalize(glm::cross(helper, axis)), w = glm::cross(axis, u);
-  const auto gl = quad::gauss_legendre(2 * order + 4, std::cos(alpha), 1.0);
+  const auto gl = sh::gauss_legendre(2 * order + 4, std::cos(alpha), 1.0);
   const int nphi = 2 * order + 3;
   sh::Vec out(sh::num_coeffs(order), 0.0), y(out.size());
   for (std::size_t q = 0; q < gl.nodes.size(); ++q) {
@@ -58,8 +58,8 @@ sh::Vec cap_projection_in_own_frame(int order, const glm::dvec3& axis, double al
 TEST(SphereBlocker, CapAboutZMatchesGroundTruthProjection) {
   for (int order : {1, 2, 3, 4, 6, 8})
     for (double alpha : {0.02, 0.3, 0.7853981633974483, 1.2, kPi / 2}) {
-      truth::Occluders occ{{}, {{{0, 0, 1}, alpha}}};
-      const sh::Vec t0 = truth::project_visibility(order, occ, {32, 24, {}});
+      shading::Occluders occ{{}, {{{0, 0, 1}, alpha}}};
+      const sh::Vec t0 = shading::project_visibility(order, occ, {32, 24, {}});
       const sh::Vec vis = zh_to_sh(sh::cap_visibility_zh(order, std::cos(alpha)));
       EXPECT_LT(rel_diff(vis, t0), 1e-9) << "order " << order << " alpha " << alpha;
       // Occlusion = 1 − visibility, compared relative to its own norm.
@@ -73,7 +73,7 @@ TEST(SphereBlocker, OrderFourSFormMatchesLegendreForm) {
   // math-notes §4 written in s = r/d: an independent algebraic form.
   for (double s : {0.05, 0.3, 0.5, 0.8, 0.99, 1.0}) {
     const double c = std::sqrt(1 - s * s);
-    const sh::Vec z = sh::cap_zh(4, sh::sphere_cap_cos(s, 1.0));
+    const sh::Vec z = sh::cap_zh(4, blockers::sphere_cap_cos(s, 1.0));
     EXPECT_NEAR(z[0], std::sqrt(kPi) * (1 - c), 1e-14);
     EXPECT_NEAR(z[1], std::sqrt(3 * kPi) / 2 * s * s, 1e-14);
     EXPECT_NEAR(z[2], std::sqrt(5 * kPi) / 2 * s * s * c, 1e-14);
@@ -94,7 +94,7 @@ TEST(SphereBlocker, MathNotesTableT1) {
        {2.545049, -1.243342, -0.699668, 0.023740}},
   };
   for (const Row& r : rows) {
-    const double c = sh::sphere_cap_cos(r.s, 1.0);
+    const double c = blockers::sphere_cap_cos(r.s, 1.0);
     EXPECT_NEAR(std::acos(c), std::asin(r.s), 1e-12);
     const sh::Vec cap = sh::cap_zh(4, c), lg = sh::cap_log_visibility_zh(4, c, 0.1), vis = sh::cap_visibility_zh(4, c);
     for (int l = 0; l < 4; ++l) {
@@ -118,8 +118,8 @@ TEST(SphereBlocker, RotatedCapMatchesOwnFrameQuadratureAndTruth) {
   // And against the ground truth (midpoint in φ: converges slowly, hence the tolerance).
   const glm::dvec3 axis = axes[0];
   const double alpha = 0.6;
-  truth::Occluders occ{{}, {{axis, alpha}}};
-  const sh::Vec t0 = truth::project_visibility(4, occ, {2048, 16, {}});
+  shading::Occluders occ{{}, {{axis, alpha}}};
+  const sh::Vec t0 = shading::project_visibility(4, occ, {2048, 16, {}});
   sh::Vec vis = sh::constant_one(4);
   sh::add_rotated_zh(sh::cap_zh(4, std::cos(alpha)), axis, -1.0, vis);
   EXPECT_LT(rel_diff(vis, t0), 1e-5);
@@ -127,25 +127,25 @@ TEST(SphereBlocker, RotatedCapMatchesOwnFrameQuadratureAndTruth) {
 
 TEST(SphereBlocker, CullsBelowTangentPlaneOnly) {
   const glm::dvec3 p(1, 2, 3), n = glm::normalize(glm::dvec3(0.2, -0.1, 1.0));
-  const sh::BlockerOptions opt;
+  const blockers::BlockerOptions opt;
   const double r = 0.5;
   // Centre below the plane by more than r: culled. By less: it pokes above, kept.
-  EXPECT_EQ(sh::classify_sphere({p - (r + 1e-6) * n, r}, p, n, 4, opt), sh::Cull::kBelowTangentPlane);
+  EXPECT_EQ(blockers::classify_sphere({p - (r + 1e-6) * n, r}, p, n, 4, opt), blockers::Cull::kBelowTangentPlane);
   const glm::dvec3 tangent = glm::normalize(glm::cross(n, glm::dvec3(0, 1, 0)));
-  EXPECT_EQ(sh::classify_sphere({p - (r + 1e-9) * n + 3.0 * tangent, r}, p, n, 4, opt), sh::Cull::kBelowTangentPlane);
-  EXPECT_EQ(sh::classify_sphere({p - 0.5 * r * n + 0.1 * glm::dvec3(1, 0, 0), r}, p, n, 4, opt), sh::Cull::kKeep);
-  EXPECT_EQ(sh::classify_sphere({p + 2.0 * n, r}, p, n, 4, opt), sh::Cull::kKeep);
+  EXPECT_EQ(blockers::classify_sphere({p - (r + 1e-9) * n + 3.0 * tangent, r}, p, n, 4, opt), blockers::Cull::kBelowTangentPlane);
+  EXPECT_EQ(blockers::classify_sphere({p - 0.5 * r * n + 0.1 * glm::dvec3(1, 0, 0), r}, p, n, 4, opt), blockers::Cull::kKeep);
+  EXPECT_EQ(blockers::classify_sphere({p + 2.0 * n, r}, p, n, 4, opt), blockers::Cull::kKeep);
 }
 
 TEST(SphereBlocker, SizeCullingHonoursItsErrorBound) {
-  const sh::BlockerOptions opt;  // cull_error = 1e-4
+  const blockers::BlockerOptions opt;  // cull_error = 1e-4
   for (int order : {2, 4, 8}) {
-    const double omega_min = sh::min_cap_solid_angle(order, opt);
+    const double omega_min = blockers::min_cap_solid_angle(order, opt);
     // Sphere at distance 1 whose cap has exactly omega_min: c = 1 − Ω/(2π), r = sin α.
     const double c = 1 - omega_min / (2 * kPi), r = std::sqrt(1 - c * c);
     const glm::dvec3 p(0, 0, 0), n(0, 0, 1), dir = glm::normalize(glm::dvec3(0.3, 0.1, 1));
-    EXPECT_EQ(sh::classify_sphere({dir, r * 0.999}, p, n, order, opt), sh::Cull::kTooSmall);
-    EXPECT_EQ(sh::classify_sphere({dir, r * 1.001}, p, n, order, opt), sh::Cull::kKeep);
+    EXPECT_EQ(blockers::classify_sphere({dir, r * 0.999}, p, n, order, opt), blockers::Cull::kTooSmall);
+    EXPECT_EQ(blockers::classify_sphere({dir, r * 1.001}, p, n, order, opt), blockers::Cull::kKeep);
     // The visibility change of a dropped sphere (exact cap projection) is within the target.
     const sh::Vec dv = cap_projection_in_own_frame(order, dir, std::asin(r));
     EXPECT_LE(norm(dv) / sh::kSqrt4Pi, opt.cull_error * 1.001) << order;
@@ -157,20 +157,20 @@ TEST(SphereBlocker, AccumulationMatchesProjectedLogVisibility) {
   // Log-visibility of spheres = Σ_i log ε_i·[ω ∈ cap_i]; its projection is
   // Σ_i log ε_i·(1 − P[V_i]) with P[V_i] the ground-truth projection of one cap.
   const glm::dvec3 p(0, 0, 0), n(0, 0, 1);
-  const std::vector<sh::Sphere> spheres = {{{1, 0.5, 2}, 0.6}, {{-0.5, 0.4, 1.2}, 0.3}, {{0.2, -1, 3}, 1.0},
+  const std::vector<blockers::Sphere> spheres = {{{1, 0.5, 2}, 0.6}, {{-0.5, 0.4, 1.2}, 0.3}, {{0.2, -1, 3}, 1.0},
                                            {{0, 0, -3}, 1.0} /* below the plane */};
   for (bool ratio : {false, true}) {
-    sh::BlockerOptions opt;
+    blockers::BlockerOptions opt;
     opt.epsilon = 0.05;
     opt.ratio_attenuation = ratio;
     sh::Vec acc(16, 0.0);
-    EXPECT_EQ(sh::accumulate_log_visibility(spheres, p, n, opt, acc), 3);
+    EXPECT_EQ(blockers::accumulate_log_visibility(spheres, p, n, opt, acc), 3);
     sh::Vec ref(16, 0.0);
     for (std::size_t s = 0; s < 3; ++s) {
       const glm::dvec3 to_c = spheres[s].centre - p;
       const double d = glm::length(to_c), alpha = std::asin(spheres[s].radius / d);
       const double w = std::log(opt.epsilon) * (ratio ? spheres[s].radius / d : 1.0);
-      const sh::Vec v = truth::project_visibility(4, {{}, {{to_c / d, alpha}}}, {2048, 12, {}});
+      const sh::Vec v = shading::project_visibility(4, {{}, {{to_c / d, alpha}}}, {2048, 12, {}});
       for (int i = 0; i < 16; ++i) ref[i] += w * ((i == 0 ? sh::kSqrt4Pi : 0.0) - v[i]);
     }
     EXPECT_LT(rel_diff(acc, ref), 1e-4) << ratio;  // midpoint rule in φ of the truth
@@ -179,15 +179,15 @@ TEST(SphereBlocker, AccumulationMatchesProjectedLogVisibility) {
 
 TEST(SphereBlocker, ReceiverInsideSphereSeesAHemisphere) {
   const glm::dvec3 p(0, 0, 0), n(0, 0, 1);
-  sh::BlockerOptions opt;
+  blockers::BlockerOptions opt;
   sh::Vec inside(16, 0.0), at_centre(16, 0.0);
-  sh::accumulate_log_visibility(std::vector<sh::Sphere>{{{0.5, 0, 0}, 1.0}}, p, n, opt, inside);
-  sh::accumulate_log_visibility(std::vector<sh::Sphere>{{{0, 0, 0}, 1.0}}, p, n, opt, at_centre);
+  blockers::accumulate_log_visibility(std::vector<blockers::Sphere>{{{0.5, 0, 0}, 1.0}}, p, n, opt, inside);
+  blockers::accumulate_log_visibility(std::vector<blockers::Sphere>{{{0, 0, 0}, 1.0}}, p, n, opt, at_centre);
   const sh::Vec hemi = sh::cap_zh(4, 0.0);
   const sh::Vec ref_x = sh::rotate_zh(hemi, {1, 0, 0}), ref_z = sh::rotate_zh(hemi, {0, 0, 1});
   for (int i = 0; i < 16; ++i) {
     EXPECT_NEAR(inside[i], std::log(0.1) * ref_x[i], 1e-12);
     EXPECT_NEAR(at_centre[i], std::log(0.1) * ref_z[i], 1e-12);
   }
-  EXPECT_EQ(sh::sphere_cap_cos(0.0, 0.0), 1.0);  // a zero sphere occludes nothing
+  EXPECT_EQ(blockers::sphere_cap_cos(0.0, 0.0), 1.0);  // a zero sphere occludes nothing
 }

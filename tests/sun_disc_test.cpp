@@ -1,7 +1,7 @@
 // Visible fraction of the solar disc and of rectangular key lights (sun_disc.h) against
 // brute force: dense grids over the disc (or the light) with a per-sample horizon test
 // on the sphere, independent of the tangent-plane frame and of the closed forms.
-#include "shading/sun_disc.h"
+#include "shading/sky/sun_disc.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <numbers>
 #include <vector>
 
-namespace skylit::shading {
+namespace skylit::sky {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -244,4 +244,4 @@ TEST(RectLight, ValidationAndSunLikeLimit) {
 }
 
 }  // namespace
-}  // namespace skylit::shading
+}  // namespace skylit::sky

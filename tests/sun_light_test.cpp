@@ -3,7 +3,7 @@
 // sun's irradiance.
 #include "horizon_scenes.h"
 
-#include "shading/sun_disc.h"
+#include "shading/sky/sun_disc.h"
 #include "shading/sun_light.h"
 #include "terrain/synthetic.h"
 

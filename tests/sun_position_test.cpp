@@ -2,7 +2,7 @@
 // Andreas 2004, NREL/TP-560-34302, Table A5.1 and the spa_tester output),
 // USNO almanac rise/set tables and season instants, polar day/night, ΔT and
 // ISO 8601 parsing.
-#include "shading/sun_position.h"
+#include "shading/sky/sun_position.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "shading/time_utc.h"
+#include "shading/sky/time_utc.h"
 
-using namespace skylit::sun;
+using namespace skylit::sky;
 
 namespace {
 

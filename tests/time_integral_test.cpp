@@ -3,7 +3,7 @@
 // cos; and the sun-hours gate against the DNI's own cut-off.
 #include "shading/time_integral.h"
 
-#include "shading/sky_model.h"
+#include "shading/sky/sky_model.h"
 
 #include <gtest/gtest.h>
 
@@ -16,15 +16,15 @@ namespace skylit::shading {
 namespace {
 
 // Uneven instants from 06:00Z: steps of 0.25, 1, 0.1, 0.75, 0.5 h, repeating.
-std::vector<sun::UtcTime> uneven(int n) {
+std::vector<sky::UtcTime> uneven(int n) {
   const double steps_h[] = {0.5, 0.25, 1.0, 0.1, 0.75};
-  std::vector<sun::UtcTime> t{sun::utc_from_civil(2026, 3, 20, 6)};
+  std::vector<sky::UtcTime> t{sky::utc_from_civil(2026, 3, 20, 6)};
   for (int k = 1; k < n; ++k) t.push_back({t.back().unix_seconds + 3600.0 * steps_h[k % 5]});
   return t;
 }
 
 // Hours since the first instant.
-double hours(const std::vector<sun::UtcTime>& t, std::size_t k) {
+double hours(const std::vector<sky::UtcTime>& t, std::size_t k) {
   return (t[k].unix_seconds - t[0].unix_seconds) / 3600.0;
 }
 
@@ -73,12 +73,12 @@ TEST(TrapezoidWeights, CosineWithinTheSecondOrderBound) {
 }
 
 TEST(TrapezoidWeights, OneInstantWeighsNothingAndOrderIsChecked) {
-  const sun::UtcTime a{1000.0}, b{1000.0 + 1800.0};
-  EXPECT_EQ(trapezoid_weights_hours(std::vector<sun::UtcTime>{a}), std::vector<double>{0.0});
-  EXPECT_TRUE(trapezoid_weights_hours(std::vector<sun::UtcTime>{}).empty());
-  EXPECT_EQ(trapezoid_weights_hours(std::vector<sun::UtcTime>{a, b}), (std::vector<double>{0.25, 0.25}));
-  EXPECT_THROW(trapezoid_weights_hours(std::vector<sun::UtcTime>{b, a}), std::invalid_argument);
-  EXPECT_THROW(trapezoid_weights_hours(std::vector<sun::UtcTime>{a, a}), std::invalid_argument);
+  const sky::UtcTime a{1000.0}, b{1000.0 + 1800.0};
+  EXPECT_EQ(trapezoid_weights_hours(std::vector<sky::UtcTime>{a}), std::vector<double>{0.0});
+  EXPECT_TRUE(trapezoid_weights_hours(std::vector<sky::UtcTime>{}).empty());
+  EXPECT_EQ(trapezoid_weights_hours(std::vector<sky::UtcTime>{a, b}), (std::vector<double>{0.25, 0.25}));
+  EXPECT_THROW(trapezoid_weights_hours(std::vector<sky::UtcTime>{b, a}), std::invalid_argument);
+  EXPECT_THROW(trapezoid_weights_hours(std::vector<sky::UtcTime>{a, a}), std::invalid_argument);
 }
 
 TEST(SunHoursGate, CountsTheSunExactlyWhereItsBeamIsOn) {

@@ -9,8 +9,8 @@
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "shading/reference_renderer.h"
+#include "shading/sky/sun_position.h"
 #include "shading/summed_products.h"
-#include "shading/sun_position.h"
 #include "shading/time_integral.h"
 #include "shading/time_series.h"
 #include "terrain/analytic_scenes.h"
@@ -27,10 +27,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-const sun::Observer kEquator{0.0, 0.0, 0.0};
+const sky::Observer kEquator{0.0, 0.0, 0.0};
 constexpr const char* kEquinox = "2026-03-20";
 
-ResolvedLighting lighting_at(sun::UtcTime t) {
+ResolvedLighting lighting_at(sky::UtcTime t) {
   LightingRequest r;
   r.time = format_instant(t);
   return resolve_lighting(r, kEquator);
@@ -55,7 +55,7 @@ ProductBands daily_sum(const terrain::HeightField& field, SummedProduct product,
 
 // Apparent elevation (rad) of the sun's centre at the equator.
 double elevation(double unix_seconds) {
-  return sun::solar_position({unix_seconds}, kEquator).apparent_elevation_deg * kDeg;
+  return sky::solar_position({unix_seconds}, kEquator).apparent_elevation_deg * kDeg;
 }
 
 // The instant in [a, b] at which the apparent elevation crosses `target` (once).
@@ -72,7 +72,7 @@ TEST(DailySums, FlatOpenGroundInsolationIsTheClearSkyModelsDailySum) {
   // Reference: ∫ E dt over the whole UTC day (the local mean day at longitude 0), with
   // E = D(e)·twilight(e) + DNI(e)·sin⁺e — what the uniform sky scaled to ESRA and the
   // sun put on open flat ground (lighting.h) — by Simpson's rule on 20 s panels.
-  const double day0 = sun::parse_utc_time(std::string(kEquinox) + "T00:00Z").unix_seconds;
+  const double day0 = sky::parse_utc_time(std::string(kEquinox) + "T00:00Z").unix_seconds;
   const auto flat_ground = [](double t) {
     const double e = elevation(t);
     return sky::esra_diffuse_horizontal(e, kDefaultTurbidity) * sky::twilight_factor(e) +
@@ -128,7 +128,7 @@ TEST(DailySums, SunHoursBehindAWallAreTheDayLessTheTimeTheWallHidesTheSun) {
   std::vector<WallCase> cases;
   for (int i : {7, 47, 67, 77, 82}) cases.push_back({i, 870.0 - i * dx});
 
-  const double day0 = sun::parse_utc_time(std::string(kEquinox) + "T00:00Z").unix_seconds;
+  const double day0 = sky::parse_utc_time(std::string(kEquinox) + "T00:00Z").unix_seconds;
   const double set = crossing(day0 + 15 * 3600.0, day0 + 21 * 3600.0, 0.0);
   const double sink_rate = (elevation(set - 30.0) - elevation(set + 30.0)) / 60.0;  // rad/s
   const double gate_loss_s = 2.0 / (3.0 * kPi) * sky::kSunAngularRadius / sink_rate;

@@ -4,8 +4,8 @@
 // from the calendar (utc_from_civil), sunrise and sunset from sun_events.
 #include "shading/time_series.h"
 
-#include "shading/atmosphere.h"
-#include "shading/sun_position.h"
+#include "shading/sky/atmosphere.h"
+#include "shading/sky/sun_position.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-double at(int h, int m, double s = 0.0) { return sun::utc_from_civil(2026, 6, 21, h, m, s).unix_seconds; }
+double at(int h, int m, double s = 0.0) { return sky::utc_from_civil(2026, 6, 21, h, m, s).unix_seconds; }
 
 // The message of the std::invalid_argument `f` throws; fails the test if none.
 std::string error_of(const std::function<void()>& f) {
@@ -130,18 +130,18 @@ TEST(TimeSpec, ErrorsAreOneLineWithoutFlagNames) {
 }
 
 // Apparent elevation (rad) of the sun's centre, as the lighting sees it.
-double elevation(sun::UtcTime t, const sun::Observer& p) {
-  return sun::solar_position(t, p).apparent_elevation_deg * kDeg;
+double elevation(sky::UtcTime t, const sky::Observer& p) {
+  return sky::solar_position(t, p).apparent_elevation_deg * kDeg;
 }
 
 TEST(TimeSeriesDay, SunriseToSunsetWithTheDiscEventsAndTheStepGrid) {
-  const sun::Observer place{45.0, 7.0, 0.0};
+  const sky::Observer place{45.0, 7.0, 0.0};
   const TimeSpec spec = parse_time_spec("2026-06-21");
   ASSERT_TRUE(needs_place(spec));
   EXPECT_NE(error_of([&] { resolve_time_series(spec, std::nullopt); }).find("needs a place"), std::string::npos);
   const TimeSeries ts = resolve_time_series(spec, place);
   EXPECT_TRUE(ts.note.empty()) << ts.note;
-  const sun::SunEvents ev = sun::sun_events(sun::parse_utc_time("2026-06-21T12:00+00:28"), place);
+  const sky::SunEvents ev = sky::sun_events(sky::parse_utc_time("2026-06-21T12:00+00:28"), place);
   ASSERT_TRUE(ev.sunrise && ev.sunset);
   const auto& t = ts.instants;
   ASSERT_GE(t.size(), 4u);
@@ -172,13 +172,13 @@ TEST(TimeSeriesDay, SunriseToSunsetWithTheDiscEventsAndTheStepGrid) {
 }
 
 TEST(TimeSeriesDay, PolarDayIsTheWholeLocalDayAndPolarNightHasNoFrames) {
-  const sun::Observer svalbard{78.2, 15.6, 0.0};
+  const sky::Observer svalbard{78.2, 15.6, 0.0};
   const TimeSeries day = resolve_time_series(parse_time_spec("2026-06-21"), svalbard);
   EXPECT_NE(day.note.find("polar day"), std::string::npos);
   expect_clean(day.note);
   ASSERT_GE(day.instants.size(), 2u);
   // Local mean midnight to midnight: UTC midnight less 15.6°/15° h.
-  const double start = sun::utc_from_civil(2026, 6, 21).unix_seconds - 15.6 / 15.0 * 3600.0;
+  const double start = sky::utc_from_civil(2026, 6, 21).unix_seconds - 15.6 / 15.0 * 3600.0;
   EXPECT_NEAR(day.instants.front().unix_seconds, start, 1e-6);
   EXPECT_NEAR(day.instants.back().unix_seconds, start + 86400.0, 1e-6);
   // Its start is 0.48 of a step off the grid: all 288 grid points inside, plus the ends.
@@ -188,9 +188,9 @@ TEST(TimeSeriesDay, PolarDayIsTheWholeLocalDayAndPolarNightHasNoFrames) {
   EXPECT_NE(night.note.find("polar night"), std::string::npos);
   expect_clean(night.note);
   // The poles themselves (rise/set hour angle undefined) give the same answers.
-  EXPECT_NE(resolve_time_series(parse_time_spec("2026-06-21"), sun::Observer{90, 0, 0}).note.find("polar day"),
+  EXPECT_NE(resolve_time_series(parse_time_spec("2026-06-21"), sky::Observer{90, 0, 0}).note.find("polar day"),
             std::string::npos);
-  EXPECT_NE(resolve_time_series(parse_time_spec("2026-06-21"), sun::Observer{-90, 0, 0}).note.find("polar night"),
+  EXPECT_NE(resolve_time_series(parse_time_spec("2026-06-21"), sky::Observer{-90, 0, 0}).note.find("polar night"),
             std::string::npos);
 }
 

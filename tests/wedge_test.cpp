@@ -2,11 +2,11 @@
 // interpolated wedge and against the closed-form azimuthal × sympy polar
 // moments; assembly exact for a constant horizon at any W; convergence in W
 // against the exact projection of a non-symmetric horizon (visibility_truth).
-#include "shading/nlp.h"
-#include "shading/quadrature.h"
-#include "shading/sh_basis.h"
+#include "shading/sh/nlp.h"
+#include "shading/sh/quadrature.h"
+#include "shading/sh/sh_basis.h"
+#include "shading/sh/wedge.h"
 #include "shading/visibility_truth.h"
-#include "shading/wedge.h"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +37,7 @@ double norm(const sh::Vec& a, const sh::Vec& b) {
 std::vector<double> brute_force_matrix(int n, int big_n, int w, WedgeInterpolation interp) {
   const int taps = sh::interpolation_taps(interp), nc = n * n, nk = taps * big_n;
   const double dphi = 2 * kPi / w;
-  const auto gphi = quad::gauss_legendre(48, 0.0, dphi), gtheta = quad::gauss_legendre(48, 0.0, kPi);
+  const auto gphi = sh::gauss_legendre(48, 0.0, dphi), gtheta = sh::gauss_legendre(48, 0.0, kPi);
   std::vector<double> m(nc * nk, 0.0);
   sh::Vec y(nc);
   double wt[4];
@@ -59,7 +59,7 @@ std::vector<double> brute_force_matrix(int n, int big_n, int w, WedgeInterpolati
 // Direct projection of the cap visibility {e > σ}: only y_l0, 2π ∫_{sin σ}^1 K_l0 P_l dz.
 sh::Vec cap_visibility_projection(int n, double sigma) {
   sh::Vec v(n * n, 0.0);
-  const auto gl = quad::gauss_legendre(n + 1, std::sin(sigma), 1.0);
+  const auto gl = sh::gauss_legendre(n + 1, std::sin(sigma), 1.0);
   for (int l = 0; l < n; ++l)
     for (std::size_t q = 0; q < gl.nodes.size(); ++q)
       v[sh::index(l, 0)] += gl.weights[q] * 2 * kPi * sh::sh_norm(l, 0) * sh::legendre(l, gl.nodes[q]);
@@ -72,9 +72,9 @@ double varying_horizon(double phi) {
 
 const sh::Vec& varying_horizon_exact() {
   static const sh::Vec exact = [] {
-    truth::Occluders occ;
+    shading::Occluders occ;
     occ.horizon = varying_horizon;
-    return truth::project_visibility(4, occ);
+    return shading::project_visibility(4, occ);
   }();
   return exact;
 }

@@ -1,0 +1,435 @@
+// `skylit shade INPUT... -o OUTPUT`: the DEM hillshade/export tool. Reads DEMs
+// (or the built-in synthetic scene), computes one product, and writes it
+// georeferenced — atomically, so a failed run leaves no file. Lighting (time, place,
+// sky, sun) is resolved before any computation, so its errors cost nothing.
+#include "app/commands.h"
+#include "app/common/progress.h"
+#include "app/shade/shade_output.h"
+#include "app/shade/shade_series.h"
+#include "gpu/renderer_factory.h"
+#include "gpu/timer.h"
+
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/lighting.h"
+#include "shading/products.h"
+#include "shading/quality.h"
+#include "shading/reference_pipeline.h"
+#include "shading/summed_products.h"
+#include "shading/time_series.h"
+#include "terrain/dem_reader.h"
+#include "terrain/geolocation.h"
+#include "terrain/synthetic.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace skylit::app::shade {
+namespace {
+
+struct ShadeArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  bool synthetic = false;
+  std::uint64_t seed = 1;
+  int size = 512;
+  std::string product = "shaded";
+  std::string format;
+  std::vector<std::string> creation_options;
+  double z_factor = 1.0;
+  std::optional<double> scale, xscale, yscale;
+  shading::ProductOptions options;  // defaults come from the library
+  std::string quality = "default";
+  std::string shading_mode = "table";
+  std::string wedge = "linear";
+  std::string levels{horizon::level_sampling_name(horizon::level_sampling(horizon::MarchOptions{}))};
+  std::string horizon_max{horizon::horizon_max_name(horizon::MarchOptions{}.smooth_max)};
+  std::string horizons{horizon::horizon_method_name(horizon::MarchOptions{}.method)};
+  bool horizons_given = false;  // --horizons on the command line (the fallback note is for it)
+  bool no_curvature = false;
+  std::string backend = gpu::backend_names().front();
+  unsigned threads = 0;
+  bool quiet = false;
+  bool overwrite = false;
+  bool compute_edges = true;
+  bool timings = false;
+  shading::LightingRequest lighting;
+  bool no_sun = false;
+  std::size_t max_frames = shading::kDefaultMaxFrames;
+};
+
+// The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
+// white) is what --no-sun gives when nothing else about the light is asked for.
+bool sky_only_default(const ShadeArgs& a) {
+  const auto& l = a.lighting;
+  return a.no_sun && l.time.empty() && !l.sun_azimuth_deg && !l.sun_elevation_deg && l.sky == "uniform";
+}
+
+// The DEM's centre (WGS 84) and height there, for the sun's position.
+std::optional<sky::Observer> dem_place(const terrain::HeightField& f) {
+  const auto at = terrain::grid_centre_lat_lon(f.georef, f.width, f.height);
+  if (!at) return std::nullopt;
+  return sky::Observer{at->latitude_deg, at->longitude_deg, f.at(f.width / 2, f.height / 2)};
+}
+
+// `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
+// from the renderer (shading/renderer.h FrameTimings says which clock each uses).
+void print_timings(double read_ms, const shading::Renderer& renderer, double write_ms) {
+  const shading::FrameTimings& t = renderer.last_timings();
+  auto line = [](const char* stage, double ms) { std::fprintf(stderr, "skylit: time %-28s %9.1f ms\n", stage, ms); };
+  line("read DEM", read_ms);
+  if (renderer.on_gpu()) {
+    line("OpenGL context", t.context_ms);
+    line("compile kernels", t.compile_ms);
+    line("upload heights", t.upload_ms);
+    line("pyramid build", t.pyramid_ms);
+    line("horizon sweep", t.sweep_ms);
+    // Mesa llvmpipe runs compute outside its timer queries (they read ≈ 0): then only the
+    // stages' sum is known, inside "compute".
+    if (t.sun_ms + t.march_ms + t.products_ms > 1e-3 * t.frame_ms) {
+      line("sun shadow (GPU timer)", t.sun_ms);
+      line("march (GPU timer)", t.march_ms);
+      line("surface products (GPU timer)", t.products_ms);
+    } else {
+      std::fprintf(stderr, "skylit: time %-28s %12s\n", "sun, march, products", "(no GPU timer on this driver)");
+    }
+  }
+  line(renderer.on_gpu() ? "compute (all GPU stages)" : "compute (CPU reference)",
+       t.frame_ms - t.compile_ms);
+  line("write output", write_ms);
+}
+
+// --backend's value, checked before any work.
+gpu::Backend parse_backend_arg(const std::string& name) {
+  if (const auto backend = gpu::parse_backend(name)) return *backend;
+  std::string known;
+  for (const auto& b : gpu::backend_names()) known += (known.empty() ? "" : ", ") + b;
+  throw std::invalid_argument("--backend '" + name + "' is not available; this build has: " + known);
+}
+
+std::unique_ptr<shading::Renderer> make_shade_renderer(gpu::Backend backend, bool quiet) {
+  try {
+    return gpu::make_renderer(backend, [quiet](const std::string& note) {
+      if (!quiet) std::cerr << "skylit: note: " << note << "\n";
+    });
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("--backend " + std::string(gpu::backend_name(backend)) + ": " + e.what());
+  }
+}
+
+terrain::HeightField load_input(const ShadeArgs& a) {
+  if (a.synthetic) {
+    if (!a.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
+    terrain::SyntheticOptions opt;
+    opt.width = opt.height = a.size;
+    opt.seed = a.seed;
+    return terrain::make_synthetic_terrain(opt);
+  }
+  if (a.inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
+  terrain::DemReadOptions opt;
+  opt.scale = a.scale;
+  opt.xscale = a.xscale;
+  opt.yscale = a.yscale;
+  opt.z_factor = a.z_factor;
+  auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), opt) : terrain::read_dem(a.inputs, opt);
+  if (!a.quiet)
+    for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
+  return std::move(result.field);
+}
+
+std::vector<std::string> level_sampling_names() {
+  std::vector<std::string> names;
+  for (horizon::LevelSampling l : horizon::all_level_samplings()) names.emplace_back(horizon::level_sampling_name(l));
+  return names;
+}
+
+std::vector<std::string> horizon_method_names() {
+  std::vector<std::string> names;
+  for (horizon::HorizonMethod m : horizon::all_horizon_methods()) names.emplace_back(horizon::horizon_method_name(m));
+  return names;
+}
+
+// Why `--horizons sweep` marches on this field ("" when it sweeps or was not asked
+// for), with the conditions of shading::uses_sweep. The default sweep falls back quietly.
+std::string sweep_fallback_note(const terrain::HeightField& field, const shading::ProductOptions& o, bool asked) {
+  if (!asked || o.march.method != horizon::HorizonMethod::Sweep || shading::uses_sweep(field, o)) return "";
+  if (o.exact) return "--horizons sweep with --exact: the exact march runs instead";
+  const std::string why = o.subsample > 1 ? "--subsample " + std::to_string(o.subsample) + " sub-samples the march"
+                                          : horizon::sweep_inapplicable_reason(field, o.march);
+  return "--horizons sweep: " + why + "; the march runs instead";
+}
+
+// Upper bound of a multi-band series file held in memory before it is written.
+constexpr std::size_t kMaxSeriesFileBytes = std::size_t{4} << 30;
+
+// The frames of --time when it is a series (an interval, a list of several times, a
+// date) or the product is a sum over time; nullopt for a single time or none.
+std::optional<shading::TimeSpec> series_spec(const ShadeArgs& a, const std::optional<shading::SummedProduct>& summed) {
+  if (a.lighting.time.empty()) {
+    if (summed)
+      throw std::invalid_argument("-p " + a.product + " sums over time: give --time as an interval "
+                                  "(2026-06-21T04:00Z/2026-06-21T20:00Z/PT10M), a list of times or a date (2026-06-21)");
+    return std::nullopt;
+  }
+  shading::TimeSeriesOptions o;
+  o.max_frames = a.max_frames;
+  shading::TimeSpec spec;
+  try {
+    spec = shading::parse_time_spec(a.lighting.time, o);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--time: " + std::string(e.what()) +
+                                (std::string(e.what()).find("frames") != std::string::npos ? " (raise --max-frames)" : ""));
+  }
+  if (!spec.date && spec.instants.size() == 1) {
+    if (summed) throw std::invalid_argument("-p " + a.product + " sums over time: one --time is no interval");
+    return std::nullopt;
+  }
+  if (a.lighting.sun_azimuth_deg || a.lighting.sun_elevation_deg)
+    throw std::invalid_argument("a --time series moves the sun: give no --sun-azimuth or --sun-elevation");
+  return spec;
+}
+
+// The place of a series' sun: --lat/--lon, else the DEM's centre.
+std::optional<sky::Observer> series_place(const ShadeArgs& a, const terrain::HeightField& field) {
+  if (a.lighting.latitude_deg && a.lighting.longitude_deg)
+    return sky::Observer{*a.lighting.latitude_deg, *a.lighting.longitude_deg, a.lighting.height_m};
+  auto place = dem_place(field);
+  if (!place) throw std::invalid_argument("--time needs the DEM's location, but the DEM has no CRS: give --lat and --lon");
+  return place;
+}
+
+int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
+                     const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
+                     const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
+                     OutputSpec summed_out) {
+  SeriesJob job;
+  job.product = product;
+  job.summed = summed;
+  job.request = request;
+  job.place = series_place(a, field);
+  job.quiet = a.quiet;
+  job.timings = a.timings;
+  const shading::TimeSeries series = shading::resolve_time_series(times, job.place);
+  if (!series.note.empty() && !a.quiet) std::cerr << "skylit: note: " << series.note << "\n";
+  if (series.instants.empty() && !summed)
+    throw std::invalid_argument("--time " + a.lighting.time + ": no frames (" + series.note + ")");
+  job.instants = series.instants;
+  if (summed) {
+    job.outputs.files.push_back(std::move(summed_out));
+  } else {
+    const std::size_t bands = product == shading::Product::Shaded ? 3 : 1;  // at most: colour
+    job.outputs = resolve_frame_outputs(a.output, a.format, product, a.creation_options, a.overwrite,
+                                        static_cast<int>(job.instants.size()), field.size() * bands * sizeof(float),
+                                        kMaxSeriesFileBytes);
+  }
+  if (!a.quiet)
+    std::cerr << "skylit: " << job.instants.size() << " times from "
+              << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.front())) << " to "
+              << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.back())) << "\n";
+  const auto renderer = make_shade_renderer(backend, a.quiet);
+  shading::ProductOptions frame_opt = opt;
+  frame_opt.lighting = shading::Lighting{};  // lit: the renderer's check sees a lit product
+  if (const auto why = renderer->lacks(product, frame_opt))
+    throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
+                                "; use --backend reference (or auto)");
+  renderer->set_field(field);
+  renderer->set_options(opt);
+  run_series(*renderer, field, job);
+  return 0;
+}
+
+int run_shade(const ShadeArgs& a) {
+  const auto summed = shading::parse_summed_product(a.product);
+  const auto product = summed ? std::optional(shading::frame_product(*summed)) : shading::parse_product(a.product);
+  if (!product)
+    throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() +
+                                ", insolation, sun-hours)");
+  const std::optional<shading::TimeSpec> times = series_spec(a, summed);
+  using shading::Product;
+  if (times && !summed && *product != Product::Shadow && *product != Product::Irradiance && *product != Product::Shaded)
+    throw std::invalid_argument("a --time series needs a product lit by the sun: shadow, irradiance, shaded, "
+                                "insolation or sun-hours (not " + a.product + ")");
+  OutputSpec out;
+  if (!times || summed) out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
+  const gpu::Backend backend = parse_backend_arg(a.backend);
+  const bool lit = *product == shading::Product::Shadow || *product == shading::Product::Irradiance ||
+                   (*product == shading::Product::Shaded && !sky_only_default(a));
+  shading::LightingRequest request = a.lighting;
+  request.sun = !a.no_sun;
+  if (times) request.time.clear();  // each frame sets its own
+  if (lit) shading::validate(request);  // before reading the DEM
+  shading::validate_subsample(a.options);  // --subsample with --exact
+
+  const auto read_start = std::chrono::steady_clock::now();
+  const terrain::HeightField field = load_input(a);
+  const double read_ms = gpu::ms_since(read_start);
+
+  shading::ProductOptions opt = a.options;
+  opt.march.curvature.enabled = !a.no_curvature;
+  opt.threads = a.threads;
+  if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
+    std::cerr << "skylit: note: " << note << "\n";
+  if (times) return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out));
+  if (lit) {
+    const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
+    opt.lighting = resolved.lighting;
+    if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
+  }
+
+  const auto renderer = make_shade_renderer(backend, a.quiet);
+  if (const auto why = renderer->lacks(*product, opt))
+    throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
+                                "; use --backend reference (or auto)");
+  renderer->set_field(field);
+  renderer->set_options(opt);
+  ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
+  const auto bands = renderer->frame(*product, {opt.lighting, {}, std::nullopt}, [&](double f) { bar.update(f); });
+  bar.finish();
+  if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
+  const auto write_start = std::chrono::steady_clock::now();
+  write_product(out, field, bands);
+  if (a.timings) print_timings(read_ms, *renderer, gpu::ms_since(write_start));
+  if (!a.quiet) std::cerr << "skylit: wrote " << out.path << " (" << bands.width << "x" << bands.height << ", "
+                          << bands.bands << " band" << (bands.bands > 1 ? "s" : "") << ")\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_shade_command(CLI::App& root, Action& run) {
+  auto args = std::make_shared<ShadeArgs>();
+  auto* cmd = root.add_subcommand(
+      "shade", "Shade a DEM: horizon, svf, skyview, shaded relief, sun shadow or irradiance, georeferenced");
+  cmd->add_option("INPUT", args->inputs, "DEM raster(s) or a directory of tiles (mosaicked)");
+  cmd->add_option("-o,--output", args->output, "Output raster (.tif, .png)")->required();
+  cmd->add_flag("--synthetic", args->synthetic, "Use the built-in synthetic mountain scene instead of INPUT");
+  cmd->add_option("--seed", args->seed, "Seed of the synthetic scene")->capture_default_str();
+  cmd->add_option("--size", args->size, "Width and height of the synthetic scene (pixels)")
+      ->check(CLI::Range(2, 16384))->capture_default_str();
+  cmd->add_option("-p,--product", args->product,
+                  "horizon | svf | skyview | shaded | shadow | irradiance | insolation (Wh/m^2 over --time) | "
+                  "sun-hours (hours of direct sun over --time)")
+      ->capture_default_str();
+  cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
+  cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
+  cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
+  cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(CLI::PositiveNumber);
+  cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
+  cmd->add_option("--quality", args->quality,
+                  "Preset from the measured speed/error front: fast | default | high "
+                  "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--levels/--horizon-max/--horizons/"
+                  "--near-steps/--sweep-lines/--sh-order/--nlp-order win")
+      ->check(CLI::IsMember({"fast", "default", "high"}))
+      ->capture_default_str();
+  cmd->add_option("--shading-mode", args->shading_mode,
+                  "How visibility meets the sky: table (sky x BRDF table, the accurate default) | triple "
+                  "(SH triple product) | log-brdf (the seed's log-SH BRDF; errs by tens of %, docs/numerics.md)")
+      ->check(CLI::IsMember({"table", "triple", "log-brdf"}))
+      ->capture_default_str();
+  cmd->add_option("--wedge", args->wedge,
+                  "Wedge interpolation of the horizon slices over azimuth: linear | bspline (shaded, irradiance)")
+      ->check(CLI::IsMember({"linear", "bspline"}))
+      ->capture_default_str();
+  cmd->add_option("--subsample", args->options.subsample,
+                  "March horizons at every Nth texel and interpolate them; normals and shading stay per texel: 1 | 2 | 4")
+      ->check(CLI::IsMember({1, 2, 4}))
+      ->capture_default_str();
+  cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
+  cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
+  cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
+  cmd->add_option("--max-distance", args->options.march.max_distance_m, "Maximum marching distance in metres (0: the DEM extent)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--levels", args->levels,
+                  "How march steps read the height pyramid: bspline (cubic B-spline, NS09) | bilinear (4 samples "
+                  "instead of 16) | none (no pyramid: level-0 heights, bilinear); docs/accuracy.md")
+      ->check(CLI::IsMember(level_sampling_names()))
+      ->capture_default_str();
+  cmd->add_option("--horizon-max", args->horizon_max,
+                  "Maximum of the blocking angles along a ray: smooth (B-spline through them, NS09) | plain")
+      ->check(CLI::IsMember({std::string(horizon::horizon_max_name(true)), std::string(horizon::horizon_max_name(false))}))
+      ->capture_default_str();
+  cmd->add_option("--horizons", args->horizons,
+                  "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
+                  "with convex hulls: near-exact horizons in O(N^2) per azimuth; needs a projected grid (one row "
+                  "spacing), the default --max-distance and no --subsample; elsewhere the march runs, with a note "
+                  "when sweep was asked for)")
+      ->check(CLI::IsMember(horizon_method_names()))
+      ->capture_default_str();
+  cmd->add_option("--sweep-lines", args->options.march.sweep_lines,
+                  "Sweep lines per texel across each azimuth (--horizons sweep): a texel's far field comes from "
+                  "a line at most 1/(2N) texel beside its own ray")
+      ->check(CLI::Range(1, 64))->capture_default_str();
+  cmd->add_option("--near-steps", args->options.march.sweep_near_steps,
+                  "Half-texel steps K each texel takes along its own ray before the sweep line's far field "
+                  "(--horizons sweep; K >= twice the DEM's side is the exact march)")
+      ->check(CLI::Range(0, 1 << 16))->capture_default_str();
+  cmd->add_option("--kv", args->options.march.k_v, "Pyramid levels per halving of resolution")->check(CLI::Range(1, 16))->capture_default_str();
+  cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
+  cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
+  cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
+  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  auto& l = args->lighting;
+  cmd->add_option("--time", l.time,
+                  "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "
+                  "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon); a series: an interval "
+                  "START/END/STEP (2026-06-21T04:00Z/2026-06-21T20:00Z/PT15M), a comma-separated list, or a date "
+                  "(2026-06-21: that local day, sunrise to sunset); frames go to one file each when OUTPUT has a "
+                  "%d (frames/shadow_%04d.png), else to one GeoTIFF band each");
+  cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
+      ->capture_default_str();
+  cmd->add_option("--lat", l.latitude_deg, "Latitude for --time, degrees north (default: the DEM's centre)");
+  cmd->add_option("--lon", l.longitude_deg, "Longitude for --time, degrees east (default: the DEM's centre)");
+  cmd->add_option("--sun-azimuth,--azimuth", l.sun_azimuth_deg,
+                  "Sun azimuth, degrees from north clockwise (gdaldem -az; default 315 without --time)");
+  cmd->add_option("--sun-elevation,--altitude", l.sun_elevation_deg,
+                  "Sun elevation above the horizon, degrees (gdaldem -alt; default 45 without --time)");
+  cmd->add_option("--sky", l.sky, "Sky: uniform | preetham | cie:<1..16> | an equirectangular .hdr/.exr map")
+      ->capture_default_str();
+  cmd->add_option("--turbidity", l.turbidity, "Clear-sky turbidity (sun DNI, sky level), 1.7..10")->capture_default_str();
+  cmd->add_option("--sky-scale", l.sky_scale, "Multiplier of .hdr/.exr sky pixel values (to W m^-2 sr^-1)")
+      ->capture_default_str();
+  cmd->add_flag("--no-sun", args->no_sun,
+                "Sky light only; with nothing else about the light, the classic uniform-sky relief "
+                "(open flat ground white)");
+  cmd->add_option("--backend", args->backend,
+                  "Compute backend: auto (GPU where an OpenGL 4.5 context exists and the GPU has the product, "
+                  "else reference) | gpu | reference (CPU, double precision)")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
+  cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
+  cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
+  cmd->callback([&run, args, cmd] {
+    // The preset sets the quality knobs the user did not give explicitly.
+    shading::ProductOptions preset = args->options;
+    shading::apply_quality(*shading::parse_quality(args->quality), preset);
+    auto& o = args->options;
+    if (!cmd->count("--azimuths")) o.march.azimuths = preset.march.azimuths;
+    if (!cmd->count("--kv")) o.march.k_v = preset.march.k_v;
+    if (!cmd->count("--level-offset")) o.march.level_offset = preset.march.level_offset;
+    horizon::set_level_sampling(o.march, cmd->count("--levels") ? *horizon::parse_level_sampling(args->levels)
+                                                                 : horizon::level_sampling(preset.march));
+    o.march.smooth_max =
+        cmd->count("--horizon-max") ? args->horizon_max == horizon::horizon_max_name(true) : preset.march.smooth_max;
+    args->horizons_given = cmd->count("--horizons") > 0;
+    o.march.method = args->horizons_given ? *horizon::parse_horizon_method(args->horizons) : preset.march.method;
+    if (!cmd->count("--near-steps")) o.march.sweep_near_steps = preset.march.sweep_near_steps;
+    if (!cmd->count("--sweep-lines")) o.march.sweep_lines = preset.march.sweep_lines;
+    if (!cmd->count("--sh-order")) o.shaded.sh_order = preset.shaded.sh_order;
+    if (!cmd->count("--nlp-order")) o.shaded.nlp_order = preset.shaded.nlp_order;
+    args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
+    args->options.shaded.wedge =
+        args->wedge == "bspline" ? sh::WedgeInterpolation::BSpline : sh::WedgeInterpolation::Linear;
+    run = [args] { return run_shade(*args); };
+  });
+}
+
+}  // namespace skylit::app::shade

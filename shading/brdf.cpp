@@ -1,6 +1,7 @@
 #include "shading/brdf.h"
 
 #include "shading/sh/quadrature.h"
+#include "shading/sh/zonal.h"
 
 #include <glm/geometric.hpp>
 
@@ -38,22 +39,10 @@ glm::dvec3 lobe_axis(const Brdf& brdf, const glm::dvec3& normal, const glm::dvec
 
 double lobe_profile(double r, double t) { return t > 0.0 ? lobe_peak(r) * std::pow(t, r) : 0.0; }
 
-sh::Vec clamped_cosine_zh(int order) {
-  sh::Vec z = lobe_zh(order, 1.0);
-  for (double& v : z) v *= sh::kPi;  // g_1 = max(cos, 0)/π
-  return z;
-}
-
 sh::Vec lobe_zh(int order, double r) {
   check_order(order);
   check_lobe(r, 1.0);
-  // J_l = ∫_0^1 t^r P_l(t) dt; J_0 = 1/(r+1), J_1 = 1/(r+2), then the two-step recurrence.
-  sh::Vec j(order);
-  for (int l = 0; l < order; ++l)
-    j[l] = l == 0 ? 1.0 / (r + 1) : l == 1 ? 1.0 / (r + 2) : (r - l + 2) / (r + l + 1) * j[l - 2];
-  sh::Vec z(order);
-  for (int l = 0; l < order; ++l) z[l] = zh_scale(l) * lobe_peak(r) * j[l];
-  return z;
+  return sh::clamped_cosine_power_zh(order, r, lobe_peak(r));
 }
 
 sh::Vec brdf_zh(int order, const Brdf& brdf) { return lobe_zh(order, brdf.lobe_exponent()); }

@@ -15,7 +15,8 @@
 //
 // A ZH vector z_l (l < order) holds the m = 0 coefficients of the lobe about +z:
 //   z_l = 2π ∫_{−1}^{1} g(t)·y_l0(t) dt = √(π(2l+1))·∫_{−1}^{1} g(t) P_l(t) dt.
-// It is rotated toward a with sh::rotate_zh / sh::add_rotated_zh.
+// It is rotated toward a with sh::rotate_zh / sh::add_rotated_zh. The lobe without its
+// normalisation, max(cos θ, 0)^r, is sh::clamped_cosine_power_zh (shading/sh/zonal.h).
 #pragma once
 
 #include "shading/sh/sh_basis.h"
@@ -39,8 +40,6 @@ glm::dvec3 lobe_axis(const Brdf& brdf, const glm::dvec3& normal, const glm::dvec
 // g_r(t) = (r+1)/(2π)·max(t, 0)^r.
 double lobe_profile(double r, double t);
 
-// ZH of max(cos θ, 0): (√π/2, √(π/3), √(5π)/8, 0, …) — not divided by π.
-sh::Vec clamped_cosine_zh(int order);
 // ZH of g_r (Lambert·cos for r = 1, normalised Phong otherwise). Closed form
 // through ∫_0^1 t^r P_l = (r−l+2)/(r+l+1)·∫_0^1 t^r P_{l−2}, valid for real r > −1.
 sh::Vec lobe_zh(int order, double r);

@@ -34,6 +34,7 @@
 
 #include "shading/horizon/horizon_march.h"
 #include "shading/lighting.h"
+#include "shading/parallel_rows.h"
 #include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
 #include "terrain/height_field.h"
@@ -117,9 +118,6 @@ struct ProductBands {
     return data[(static_cast<std::size_t>(b) * height + j) * width + i];
   }
 };
-
-// Fraction done in [0, 1]; called from worker threads, one call at a time.
-using ProgressCallback = std::function<void(double fraction)>;
 
 // Computes `product` for every texel of `field`. Throws std::invalid_argument on bad
 // options (W < 1, k_v < 1, negative distances, …).

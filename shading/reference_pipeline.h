@@ -5,6 +5,7 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_march.h"
+#include "shading/parallel_rows.h"
 #include "shading/products.h"
 #include "shading/shading_modes.h"
 #include "shading/sky_brdf_table.h"
@@ -14,12 +15,6 @@
 #include <memory>
 
 namespace skylit::shading {
-
-// Calls body(row) for every row in [0, rows) on `threads` workers (0 = hardware
-// concurrency), reporting the fraction of rows done. The first exception thrown by
-// a body stops the remaining rows and is rethrown here.
-void parallel_rows(int rows, unsigned threads, const std::function<void(int row)>& body,
-                   const ProgressCallback& progress = {});
 
 // The horizon of one texel and heading, from either marcher; raw maxima, no floor.
 // Whether compute_product finds `field`'s horizons by sweeping (horizon_sweep.h): the

@@ -4,7 +4,7 @@
 #include "shading/horizon/horizon_ray.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/horizon/surface_normals.h"
-#include "shading/reference_pipeline.h"
+#include "shading/parallel_rows.h"
 #include "shading/sky/sun_disc.h"
 
 #include <algorithm>

@@ -2,6 +2,7 @@
 // midpoint integration in θ, the closed forms and tables of math-notes §7, and
 // the sky module's clamped cosine.
 #include "shading/brdf.h"
+#include "shading/sh/zonal.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -36,7 +37,7 @@ void expect_near(const sh::Vec& a, const sh::Vec& b, double tol, const std::stri
 }  // namespace
 
 TEST(BrdfZh, ClampedCosineMatchesNs09) {
-  expect_near(shading::clamped_cosine_zh(4), {0.886227, 1.023327, 0.495416, 0.0}, 1e-6, "math-notes §7");
+  expect_near(sh::clamped_cosine_zh(4), {0.886227, 1.023327, 0.495416, 0.0}, 1e-6, "math-notes §7");
   // Lambert·cos = clamped cosine / π; its DC is 1/√(4π) (albedo 1 integrates to 1).
   const auto lambert = shading::brdf_zh(4, Brdf{});
   EXPECT_NEAR(lambert[0], 1 / sh::kSqrt4Pi, 1e-15);

@@ -1,9 +1,9 @@
 // SH projection of skies: coefficients against an independent dense midpoint
 // θ × φ quadrature, irradiance identities (√(4π/3)·L_10, clamped-cosine ZH),
 // orientation of the frame, z-rotation consistency, and windowing.
-#include "shading/brdf.h"
 #include "shading/sh/sh_basis.h"
 #include "shading/sh/sh_rotation.h"
+#include "shading/sh/zonal.h"
 #include "shading/sky/sky_cie.h"
 #include "shading/sky/sky_model.h"
 #include "shading/sky/sky_preetham.h"
@@ -75,7 +75,7 @@ TEST(SkySh, UniformSkyClosedForm) {
 }
 
 TEST(SkySh, ClampedCosineZhClosedForms) {
-  const auto z = shading::clamped_cosine_zh(8);  // shading/brdf.h
+  const auto z = sh::clamped_cosine_zh(8);  // shading/sh/zonal.h
   const double sp = std::sqrt(kPi);
   const double expected[8] = {sp / 2, std::sqrt(kPi / 3), std::sqrt(5 * kPi) / 8, 0, -sp / 16, 0, std::sqrt(13 * kPi) / 128, 0};
   for (int l = 0; l < 8; ++l) EXPECT_NEAR(z[l], expected[l], 1e-14) << l;

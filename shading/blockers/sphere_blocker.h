@@ -1,10 +1,12 @@
-// Sphere blockers (aircraft) in SH and log-SH (math-notes §4, §9.7): closed-form
-// ZH of the occluded cap, its visibility and log-visibility ZH, culling, and the
-// accumulation of many spheres into one log-SH vector by ZH rotation.
+// Sphere blockers (aircraft) in SH and log-SH (math-notes §4, §9.7): the cap a sphere
+// occludes (its closed-form ZH, visibility and log-visibility ZH are sh::cap_zh & co.,
+// shading/sh/zonal.h), culling, and the accumulation of many spheres into one log-SH
+// vector by ZH rotation.
 #pragma once
 
 #include "shading/sh/sh_basis.h"
 #include "shading/sh/sh_exp.h"
+#include "shading/sh/zonal.h"
 
 #include <span>
 
@@ -18,20 +20,9 @@ struct Sphere {
 // cos of the cap half-angle asin(min(1, r/d)) a sphere (radius r, centre at
 // distance d) subtends; the cap is at most a hemisphere (d ≤ r → 0).
 double sphere_cap_cos(double radius, double distance);
-// Solid angle 2π(1 − cos α) of a cap.
-double cap_solid_angle(double cos_alpha);
-
-// ZH (z_0 … z_{n−1}, n = out.size() ≤ kMaxOrder) of the cap indicator {θ ≤ α}:
-// z_0 = √π(1−c), z_l = √(π(2l+1))·(P_{l−1}(c) − P_{l+1}(c))/(2l+1), c = cos α.
-void cap_zh(double cos_alpha, std::span<double> out);
-Vec cap_zh(int order, double cos_alpha);
-// Visibility ZH of the same cap: (√(4π) − z_0, −z_1, …).
-Vec cap_visibility_zh(int order, double cos_alpha);
-// Log-visibility ZH: log ε·z (times `attenuation`, 1 unless ratio attenuation).
-Vec cap_log_visibility_zh(int order, double cos_alpha, double epsilon, double attenuation = 1.0);
 
 struct BlockerOptions {
-  double epsilon = kDefaultLogEpsilon;  // visibility floor inside a blocker: log ε per sphere
+  double epsilon = sh::kDefaultLogEpsilon;  // visibility floor inside a blocker: log ε per sphere
   // LSH: scale each log vector by r/d (ε_eff = ε^{r/d}: isolated spheres turn
   // semi-transparent). Off: with the HYB guards on it gains little (table D).
   bool ratio_attenuation = false;

@@ -1,8 +1,8 @@
 #include "shading/sh/hyb_table.h"
 
-#include "shading/blockers/sphere_blocker.h"
 #include "shading/sh/sh_basis.h"
-#include "shading/sh/sh_exp.h"
+#include "shading/sh/sh_exp_reference.h"
+#include "shading/sh/zonal.h"
 
 #include <algorithm>
 #include <array>

@@ -5,24 +5,16 @@
 //  * HYB exp_hyb: DC isolation, a base for a scaled-down h = f̂/2^k, k squarings
 //    with the truncated product, plus the guards of §9 (templated on float/double).
 // DC isolation is exact for all three: exp*(f) = e^{f_0/√(4π)}·exp*(f − f_0 e_0).
+// T1 and T2 are in sh_exp_reference.h (included here), which the HYB table
+// (hyb_table.h) is fitted against: sh_exp -> hyb_table -> sh_exp_reference.
 #pragma once
 
 #include "shading/sh/sh_basis.h"
+#include "shading/sh/sh_exp_reference.h"
 
 #include <span>
 
 namespace skylit::sh {
-
-// T1 on an nz × nphi product grid (GL in z × midpoint in φ). The defaults
-// converge to ≤ 1e-11 relative for order ≤ 4 and |f| in the hundreds (§6.1).
-Vec exp_pointwise(std::span<const double> f, int nz = 96, int nphi = 192);
-// T1 of a ZH vector (z_0 … z_{n−1}) by GL in z; the result is ZH too.
-Vec exp_pointwise_zh(std::span<const double> zh, int nodes = 64);
-
-// T2 = expm(M_f)·1 by the eigendecomposition of the symmetric M_f̂ (cyclic
-// Jacobi), shifted by its largest eigenvalue so nothing overflows before the
-// final scale e^{f_0/√(4π) + λ_max}.
-Vec exp_product_algebra(std::span<const double> f);
 
 // Default ε of log-visibility (log ε inside a blocker) and of the HYB log floor:
 // the best or near-best vector error over 10–400 overlapping spheres with the

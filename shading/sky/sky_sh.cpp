@@ -1,8 +1,7 @@
 #include "shading/sky/sky_sh.h"
 
-#include "shading/brdf.h"
-
 #include "shading/sh/sh_rotation.h"
+#include "shading/sh/zonal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +61,7 @@ Rgb reconstruct(const RgbSh& s, const glm::dvec3& dir) {
 }
 
 Rgb irradiance(const RgbSh& s, const glm::dvec3& normal) {
-  const sh::Vec k = sh::rotate_zh(shading::clamped_cosine_zh(s.order()), normal);
+  const sh::Vec k = sh::rotate_zh(sh::clamped_cosine_zh(s.order()), normal);
   return {sh::dot(s.c[0], k), sh::dot(s.c[1], k), sh::dot(s.c[2], k)};
 }
 

@@ -61,7 +61,7 @@ void apply_window(RgbSh& s, Window w);
 Rgb reconstruct(const RgbSh& s, const glm::dvec3& dir);
 
 // Irradiance ∫ L max(n·ω, 0) dω on a surface with unit normal n, from the SH
-// (exact for the order-n band-limited sky: the clamped cosine's ZH, shading/brdf.h,
+// (exact for the order-n band-limited sky: the clamped cosine's ZH, shading/sh/zonal.h,
 // rotated to n).
 Rgb irradiance(const RgbSh& s, const glm::dvec3& normal);
 // Horizontal irradiance of a sky that is 0 below the horizon: there cos θ need not

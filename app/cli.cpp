@@ -12,10 +12,10 @@ int run_cli(int argc, char** argv) {
   root.set_version_flag("--version", std::string("skylit ") + SKYLIT_VERSION);
   root.require_subcommand(1);
   Action run;
-  add_shade_command(root, run);
-  add_sun_command(root, run);
-  add_bench_command(root, run);
-  add_scene_command(root, run);
+  shade::add_shade_command(root, run);
+  shade::add_sun_command(root, run);
+  bench::add_bench_command(root, run);
+  shade::add_scene_command(root, run);
   try {
     // CLI11 wants argv in reverse order when given as a vector.
     std::vector<std::string> args = normalise_gdal_style_args(argc, argv);

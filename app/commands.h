@@ -10,12 +10,21 @@ namespace skylit::app {
 
 using Action = std::function<int()>;
 
-void add_shade_command(CLI::App& root, Action& run);
-void add_sun_command(CLI::App& root, Action& run);
-void add_bench_command(CLI::App& root, Action& run);
-void add_scene_command(CLI::App& root, Action& run);
-
 // Runs the CLI: parses, dispatches, turns exceptions into one-line errors.
 int run_cli(int argc, char** argv);
 
 }  // namespace skylit::app
+
+namespace skylit::app::shade {  // app/shade/: the export tool
+
+void add_shade_command(CLI::App& root, Action& run);
+void add_sun_command(CLI::App& root, Action& run);
+void add_scene_command(CLI::App& root, Action& run);
+
+}  // namespace skylit::app::shade
+
+namespace skylit::app::bench {  // app/bench/: speed against error
+
+void add_bench_command(CLI::App& root, Action& run);
+
+}  // namespace skylit::app::bench

@@ -21,6 +21,7 @@
 #include <vector>
 
 using namespace skylit;
+using namespace skylit::horizon;
 using namespace skylit::shading;
 
 namespace {

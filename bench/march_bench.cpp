@@ -43,7 +43,8 @@
 
 namespace {
 
-namespace sh = skylit::shading;
+namespace horizon = skylit::horizon;
+namespace shading = skylit::shading;
 namespace tr = skylit::terrain;
 
 constexpr int kAzimuths = 32;
@@ -64,7 +65,7 @@ const tr::HeightField& scene(int size) {
 
 struct Sample {
   int i, j;
-  sh::Heading u;
+  horizon::Heading u;
 };
 
 // 4096 (texel, azimuth) pairs, uniform over the grid and the W headings.
@@ -75,7 +76,7 @@ std::vector<Sample> samples(int size) {
     x.i = static_cast<int>(rng() % size);
     x.j = static_cast<int>(rng() % size);
     const int k = static_cast<int>(rng() % kAzimuths);
-    x.u = sh::heading_from_geographic(sh::band_azimuth(k, kAzimuths));
+    x.u = horizon::heading_from_geographic(horizon::band_azimuth(k, kAzimuths));
   }
   return s;
 }
@@ -86,16 +87,17 @@ std::vector<Sample> samples(int size) {
 // texel in turn. Random order: the 4096 scattered pairs (cache-cold samples).
 void BM_MaxElevation(benchmark::State& state) {
   const int size = static_cast<int>(state.range(0));
-  sh::MarchOptions opt;
+  horizon::MarchOptions opt;
   opt.azimuths = kAzimuths;
   opt.smooth_max = state.range(1) != 0;
   opt.use_pyramid = state.range(2) != 0;
   const bool random = state.range(3) != 0;
   const tr::HeightField& field = scene(size);
-  const sh::HorizonMarcher marcher(field, opt);
+  const horizon::HorizonMarcher marcher(field, opt);
   const auto s = samples(size);
-  std::vector<sh::Heading> headings(kAzimuths);
-  for (int k = 0; k < kAzimuths; ++k) headings[k] = sh::heading_from_geographic(sh::band_azimuth(k, kAzimuths));
+  std::vector<horizon::Heading> headings(kAzimuths);
+  for (int k = 0; k < kAzimuths; ++k)
+    headings[k] = horizon::heading_from_geographic(horizon::band_azimuth(k, kAzimuths));
   std::size_t r = 0;
   int i = 0, j = size / 4, k = 0;  // start a quarter down: rows near the edge end early
   for (auto _ : state) {
@@ -133,13 +135,13 @@ BENCHMARK(BM_MaxElevation)
 void BM_ExactMaxElevation(benchmark::State& state) {
   const int size = static_cast<int>(state.range(0));
   const tr::HeightField& field = scene(size);
-  const sh::ExactMarch opt;
+  const horizon::ExactMarch opt;
   const auto s = samples(size);
   std::size_t k = 0;
   for (auto _ : state) {
     const Sample& x = s[k];
     k = (k + 1) & (s.size() - 1);
-    double e = sh::exact_max_elevation(field, x.i, x.j, x.u, opt);
+    double e = horizon::exact_max_elevation(field, x.i, x.j, x.u, opt);
     benchmark::DoNotOptimize(e);
   }
   state.SetItemsProcessed(state.iterations());
@@ -150,10 +152,10 @@ BENCHMARK(BM_ExactMaxElevation)->ArgName("size")->Arg(256)->Arg(512)->Unit(bench
 
 void BM_MarcherBuild(benchmark::State& state) {
   const tr::HeightField& field = scene(static_cast<int>(state.range(0)));
-  sh::MarchOptions opt;
+  horizon::MarchOptions opt;
   opt.azimuths = kAzimuths;
   for (auto _ : state) {
-    sh::HorizonMarcher marcher(field, opt);
+    horizon::HorizonMarcher marcher(field, opt);
     benchmark::DoNotOptimize(&marcher);
   }
   state.SetItemsProcessed(state.iterations() * field.width * field.height);  // texels/s
@@ -162,18 +164,18 @@ BENCHMARK(BM_MarcherBuild)->ArgName("size")->Arg(512)->Arg(1024)->Unit(benchmark
 
 // ---- whole products --------------------------------------------------------------------
 
-const sh::Product kProducts[] = {sh::Product::Svf, sh::Product::Skyview, sh::Product::Shaded};
+const shading::Product kProducts[] = {shading::Product::Svf, shading::Product::Skyview, shading::Product::Shaded};
 
-void run_product(benchmark::State& state, int size, sh::Product product, unsigned threads, bool exact,
-                 sh::HorizonMethod method = sh::HorizonMethod::March) {
+void run_product(benchmark::State& state, int size, shading::Product product, unsigned threads, bool exact,
+                 horizon::HorizonMethod method = horizon::HorizonMethod::March) {
   const tr::HeightField& field = scene(size);
-  sh::ProductOptions opt;
+  shading::ProductOptions opt;
   opt.march.method = method;
   opt.march.azimuths = kAzimuths;
   opt.threads = threads;
   opt.exact = exact;
   for (auto _ : state) {
-    sh::ProductBands bands = sh::compute_product(field, product, opt);
+    shading::ProductBands bands = shading::compute_product(field, product, opt);
     benchmark::DoNotOptimize(bands.data.data());
   }
   const double texels = static_cast<double>(field.width) * field.height;
@@ -183,7 +185,7 @@ void run_product(benchmark::State& state, int size, sh::Product product, unsigne
   state.counters["texel_az/s"] =
       benchmark::Counter(texels * azimuths * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["W"] = azimuths;
-  state.SetLabel(std::string(sh::product_name(product)));
+  state.SetLabel(std::string(shading::product_name(product)));
 }
 
 void BM_ComputeProduct(benchmark::State& state) {
@@ -201,7 +203,8 @@ BENCHMARK(BM_ComputeProduct)
 
 // The same products with the horizon sweep (the default on projected grids), 2 threads.
 void BM_ComputeProductSweep(benchmark::State& state) {
-  run_product(state, static_cast<int>(state.range(0)), kProducts[state.range(1)], 2, false, sh::HorizonMethod::Sweep);
+  run_product(state, static_cast<int>(state.range(0)), kProducts[state.range(1)], 2, false,
+              horizon::HorizonMethod::Sweep);
 }
 BENCHMARK(BM_ComputeProductSweep)
     ->ArgNames({"size", "product"})
@@ -214,11 +217,11 @@ BENCHMARK(BM_ComputeProductSweep)
 // azimuth. items_per_second = texels per second.
 void BM_SweepFarSlopes(benchmark::State& state) {
   const tr::HeightField& field = scene(static_cast<int>(state.range(0)));
-  sh::MarchOptions o;
+  horizon::MarchOptions o;
   o.sweep_near_steps = static_cast<int>(state.range(1));
   o.sweep_lines = static_cast<int>(state.range(2));
-  const sh::Heading u = sh::heading_from_geographic(sh::band_azimuth(1, 12));
-  for (auto _ : state) benchmark::DoNotOptimize(sh::sweep_far_slopes(field, u, o).data());
+  const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(1, 12));
+  for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, o).data());
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
 }
 BENCHMARK(BM_SweepFarSlopes)

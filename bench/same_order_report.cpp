@@ -14,6 +14,7 @@
 #include <string>
 
 using namespace skylit;
+using namespace skylit::horizon;
 using namespace skylit::shading;
 
 namespace {

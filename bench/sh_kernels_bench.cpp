@@ -33,6 +33,7 @@
 namespace {
 
 namespace sh = skylit::sh;
+namespace blockers = skylit::blockers;
 using sh::kPi;
 
 const glm::dvec3 kOrigin{0.0, 0.0, 0.0};

@@ -67,7 +67,7 @@ std::vector<blockers::Sphere> make_spheres(int count) {
 
 struct Scene {
   std::string name;
-  shading::Occluders occ;             // the true binary visibility
+  shading::Occluders occ;                 // the true binary visibility
   std::vector<blockers::Sphere> spheres;  // over flat ground (σ = 0) when non-empty
   bool height_field = false;
 };

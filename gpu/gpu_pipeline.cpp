@@ -139,7 +139,7 @@ void validate_options(Product product, const shading::ProductOptions& o) {
     throw std::invalid_argument("the GPU pipeline cannot compute '" + std::string(shading::product_name(product)) +
                                 "' with these options (a lit product needs ProductOptions::lighting and "
                                 "the multi-resolution march)");
-  shading::validate(o.march);
+  horizon::validate(o.march);
   if (o.exact && !(o.exact_options.step_texels > 0.0)) throw std::invalid_argument("exact: step must be > 0");
   if (horizon_bands(product, o) < 1) throw std::invalid_argument("exact: sky azimuths must be ≥ 1");
   if (!(o.shaded.albedo >= 0.0) || !(o.shaded.exposure > 0.0))

@@ -70,11 +70,11 @@ double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& 
   const int w = static_cast<int>(sigma.size());
   double sum = 0.0;
   for (int k = 0; k < w; ++k) {
-    const Heading u = heading_from_geographic(band_azimuth(k, w));
+    const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(k, w));
     // The uniform sky exists only above the horizontal.
     sum += skyview_slice_integral(std::max(sigma[k], 0.0), normal, u.east, u.north);
   }
-  return sum * kTwoPi / w;
+  return sum * horizon::kTwoPi / w;
 }
 
 float srgb_code_value(double linear) {

@@ -77,7 +77,7 @@ struct ShadedOptions {
 };
 
 struct ProductOptions {
-  MarchOptions march;           // W, k_v, n_v, o_v, max distance, curvature, smoothing
+  horizon::MarchOptions march;  // W, k_v, n_v, o_v, max distance, curvature, smoothing
   bool exact = false;           // ground truth: dense half-texel march (see horizon_exact.h)
   ExactOptions exact_options;
   ShadedOptions shaded;

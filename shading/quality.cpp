@@ -7,7 +7,7 @@ namespace {
 // two can never drift apart.
 QualitySettings library_defaults() {
   const ProductOptions d;
-  return {d.march.azimuths,   d.march.k_v,    d.march.level_offset,     level_sampling(d.march),
+  return {d.march.azimuths,   d.march.k_v,    d.march.level_offset,     horizon::level_sampling(d.march),
           d.march.smooth_max, d.march.method, d.march.sweep_near_steps, d.march.sweep_lines,
           d.shaded.sh_order,  d.shaded.nlp_order};
 }
@@ -56,7 +56,7 @@ void apply_quality(Quality q, ProductOptions& options) {
   options.march.azimuths = s.azimuths;
   options.march.k_v = s.k_v;
   options.march.level_offset = s.level_offset;
-  set_level_sampling(options.march, s.levels);
+  horizon::set_level_sampling(options.march, s.levels);
   options.march.smooth_max = s.smooth_max;
   options.march.method = s.horizons;
   options.march.sweep_near_steps = s.sweep_near_steps;

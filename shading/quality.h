@@ -26,9 +26,9 @@ struct QualitySettings {
   int azimuths;
   int k_v;
   double level_offset;
-  LevelSampling levels;
+  horizon::LevelSampling levels;
   bool smooth_max;
-  HorizonMethod horizons;
+  horizon::HorizonMethod horizons;
   int sweep_near_steps;
   int sweep_lines;
   int sh_order;

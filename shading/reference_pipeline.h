@@ -29,16 +29,16 @@ class HorizonOracle {
   // Largest elevation angle (rad) along u from texel (i, j); −∞ if none on the grid.
   // Where uses_sweep: the exact march the sweep approximates (compute_product takes the
   // sweep's own horizons, which need the whole field's sweep lines).
-  double max_elevation(int i, int j, Heading u) const;
+  double max_elevation(int i, int j, horizon::Heading u) const;
   // The receiver's own ground level seen at the first march distance t₁ (the floor of
   // the `horizon` product): 0, or −atan(t₁/(2R_eff)) with Earth curvature. The sweep's
   // t₁ is the exact march's half texel.
-  double ground_floor(int j, Heading u) const;
+  double ground_floor(int j, horizon::Heading u) const;
 
  private:
   const terrain::HeightField& field_;
-  std::unique_ptr<HorizonMarcher> marcher_;  // null: exact march (or the sweep's half texel)
-  ExactMarch exact_;
+  std::unique_ptr<horizon::HorizonMarcher> marcher_;  // null: exact march (or the sweep's half texel)
+  horizon::ExactMarch exact_;
 };
 
 // Pieces of the lit products that every backend must share:

@@ -22,7 +22,7 @@ constexpr double kHalfPi = std::numbers::pi / 2;
 
 // Up to kMaxPolylinePoints horizon samples across the disc, x ascending in [−1, 1].
 struct Columns {
-  std::array<double, kMaxPolylinePoints> x{}, y{};
+  std::array<double, sky::kMaxPolylinePoints> x{}, y{};
   int n = 0;
 };
 
@@ -33,16 +33,17 @@ double finite_elevation(double sigma) { return std::clamp(sigma, -kHalfPi, kHalf
 // of slopes and one atan on the marcher's own schedule and geometry, because
 // HorizonMarcher::max_elevation buffers every blocking angle (on the heap past 64 steps,
 // and k_v = 32 takes ~300).
-double marched_elevation(const terrain::HeightField& f, const HorizonMarcher& m, int i, int j, Heading u) {
-  const MarchOptions& o = m.options();
+double marched_elevation(const terrain::HeightField& f, const horizon::HorizonMarcher& m, int i, int j,
+                         horizon::Heading u) {
+  const horizon::MarchOptions& o = m.options();
   if (o.use_pyramid || o.smooth_max) return m.max_elevation(i, j, u);
   const double h0 = f.at(i, j);
   double best = -std::numeric_limits<double>::infinity();
   for (int s = 0; s < m.steps(); ++s) {
     const double t = m.distance(s);
-    const GridPoint p = ray_point(f, i, j, u, t);
-    if (!on_grid(f, p)) break;
-    best = std::max(best, (bilinear_height(f, p) - o.curvature.drop(t) - h0) / t);
+    const horizon::GridPoint p = horizon::ray_point(f, i, j, u, t);
+    if (!horizon::on_grid(f, p)) break;
+    best = std::max(best, (horizon::bilinear_height(f, p) - o.curvature.drop(t) - h0) / t);
   }
   return std::isinf(best) ? best : std::atan(best);
 }
@@ -51,13 +52,13 @@ double marched_elevation(const terrain::HeightField& f, const HorizonMarcher& m,
 // band once, on demand (cache sized W, owned by the row).
 class BandHorizons {
  public:
-  BandHorizons(const terrain::HeightField& field, const HorizonMarcher& marcher, int azimuths)
+  BandHorizons(const terrain::HeightField& field, const horizon::HorizonMarcher& marcher, int azimuths)
       : field_(field), marcher_(marcher), w_(azimuths), sigma_(azimuths) {
     done_.assign(azimuths, 0);
   }
   void reset() { std::fill(done_.begin(), done_.end(), 0); }
   // Band coordinate of a geographic azimuth: A / (2π/W).
-  double band_coord(double azimuth) const { return azimuth * w_ / kTwoPi; }
+  double band_coord(double azimuth) const { return azimuth * w_ / horizon::kTwoPi; }
   double at(int i, int j, double band) {
     const double k0 = std::floor(band);
     const double f = band - k0;
@@ -69,13 +70,13 @@ class BandHorizons {
     const int b = static_cast<int>(((k % w_) + w_) % w_);
     if (!done_[b]) {
       sigma_[b] = finite_elevation(
-          marched_elevation(field_, marcher_, i, j, heading_from_geographic(band_azimuth(b, w_))));
+          marched_elevation(field_, marcher_, i, j, horizon::heading_from_geographic(horizon::band_azimuth(b, w_))));
       done_[b] = 1;
     }
     return sigma_[b];
   }
   const terrain::HeightField& field_;
-  const HorizonMarcher& marcher_;
+  const horizon::HorizonMarcher& marcher_;
   int w_;
   std::vector<double> sigma_;
   std::vector<char> done_;
@@ -83,8 +84,8 @@ class BandHorizons {
 
 }  // namespace
 
-MarchOptions sun_march_options() {
-  MarchOptions o;
+horizon::MarchOptions sun_march_options() {
+  horizon::MarchOptions o;
   o.k_v = 32;
   o.use_pyramid = false;
   o.smooth_max = false;
@@ -98,7 +99,7 @@ void validate(const SunShadowOptions& o) {
   if (!(o.radius > 0.0 && o.radius < std::numbers::pi / 4))
     throw std::invalid_argument("sun shadow: disc radius must be in (0, π/4)");
   if (o.horizon == SunHorizon::Exact) {
-    if (o.exact_columns < 2 || o.exact_columns > kMaxPolylinePoints)
+    if (o.exact_columns < 2 || o.exact_columns > sky::kMaxPolylinePoints)
       throw std::invalid_argument("sun shadow: exact columns must be in [2, 65]");
     if (!(o.exact.step_texels > 0.0) || !(o.exact.max_distance_m >= 0.0))
       throw std::invalid_argument("sun shadow: exact step must be > 0, max distance ≥ 0");
@@ -106,7 +107,7 @@ void validate(const SunShadowOptions& o) {
 }
 
 bool sun_sweeps(const terrain::HeightField& field, const SunShadowOptions& options) {
-  return options.horizon == SunHorizon::Swept && sweep_applicable(field, options.march);
+  return options.horizon == SunHorizon::Swept && horizon::sweep_applicable(field, options.march);
 }
 
 glm::dvec3 sun_direction(SunAngles sun) {
@@ -121,23 +122,23 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
     throw std::invalid_argument("sun shadow: sun azimuth/elevation must be finite, |elevation| ≤ π/2");
   const double r = options.radius, e_s = sun.elevation;
   // Azimuth half-width of the disc: column x sits at A_s + x·half_width.
-  const double half_width = r / disc_azimuth_scale(e_s, r);
+  const double half_width = r / sky::disc_azimuth_scale(e_s, r);
   // Swept where the sweep applies (the sun's far slopes first, one heading), else Marched.
   const bool swept = sun_sweeps(field, options);
   const SunHorizon horizon = options.horizon == SunHorizon::Swept && !swept ? SunHorizon::Marched : options.horizon;
-  std::unique_ptr<HorizonMarcher> marcher;
+  std::unique_ptr<horizon::HorizonMarcher> marcher;
   if (horizon == SunHorizon::Marched || horizon == SunHorizon::Interpolated)
-    marcher = std::make_unique<HorizonMarcher>(field, options.march);
+    marcher = std::make_unique<horizon::HorizonMarcher>(field, options.march);
   std::vector<std::uint16_t> far;  // codes (horizon_sweep.h)
-  if (swept) far = sweep_far_slopes(field, heading_from_geographic(sun.azimuth), options.march);
+  if (swept) far = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(sun.azimuth), options.march);
 
   std::vector<float> out(field.size(), std::numeric_limits<float>::quiet_NaN());
   auto march_at = [&](int i, int j, double x) {
-    const Heading u = heading_from_geographic(sun.azimuth + x * half_width);
+    const horizon::Heading u = horizon::heading_from_geographic(sun.azimuth + x * half_width);
     if (horizon == SunHorizon::Swept)  // x = 0 only
-      return finite_elevation(sweep_max_elevation(field, i, j, u, far[static_cast<std::size_t>(j) * field.width + i],
-                                                  options.march));
-    return finite_elevation(horizon == SunHorizon::Exact ? exact_max_elevation(field, i, j, u, options.exact)
+      return finite_elevation(horizon::sweep_max_elevation(
+          field, i, j, u, far[static_cast<std::size_t>(j) * field.width + i], options.march));
+    return finite_elevation(horizon == SunHorizon::Exact ? horizon::exact_max_elevation(field, i, j, u, options.exact)
                                                          : marched_elevation(field, *marcher, i, j, u));
   };
 
@@ -148,7 +149,7 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
     Columns c;
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;
-      const DiscLine tangent = tangent_plane_line(horn_normal(field, i, j), sun.azimuth, e_s, r);
+      const sky::DiscLine tangent = sky::tangent_plane_line(horizon::horn_normal(field, i, j), sun.azimuth, e_s, r);
       float& result = out[static_cast<std::size_t>(j) * field.width + i];
       if (tangent.offset <= -1.0) {  // the whole disc is behind the surface: no march
         result = 0.0f;
@@ -184,8 +185,8 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
           const double b_lo = bands->band_coord(sun.azimuth - half_width);
           const double b_hi = bands->band_coord(sun.azimuth + half_width);
           const double first = std::floor(b_lo) + 1.0, last = std::ceil(b_hi) - 1.0;
-          const bool exact_kinks = last - first + 3.0 <= kMaxPolylinePoints;
-          const int n = exact_kinks ? static_cast<int>(std::max(last - first + 1.0, 0.0)) + 2 : kMaxPolylinePoints;
+          const bool exact_kinks = last - first + 3.0 <= sky::kMaxPolylinePoints;
+          const int n = exact_kinks ? static_cast<int>(std::max(last - first + 1.0, 0.0)) + 2 : sky::kMaxPolylinePoints;
           for (int k = 0; k < n; ++k) {
             double b = 0.0;
             if (k == 0) b = b_lo;
@@ -199,7 +200,7 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
           break;
         }
       }
-      result = static_cast<float>(disc_fraction_above_polyline({c.x.data(), static_cast<std::size_t>(c.n)},
+      result = static_cast<float>(sky::disc_fraction_above_polyline({c.x.data(), static_cast<std::size_t>(c.n)},
                                                                {c.y.data(), static_cast<std::size_t>(c.n)}, &tangent));
     }
   }, progress);

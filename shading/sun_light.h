@@ -41,16 +41,16 @@ enum class SunHorizon { Marched, Interpolated, Exact, Swept };
 // texels flip from shadow to lit. The sun marches 1 ray, not W, so it can afford this.
 // Likewise its sweep (Swept): K = 8 near steps, 3 lines per texel (0.05 % flips where
 // the sky's K 4, 1 line gives 0.30 %).
-MarchOptions sun_march_options();
+horizon::MarchOptions sun_march_options();
 
 struct SunShadowOptions {
   SunHorizon horizon = SunHorizon::Marched;
   // Marched: the sun's own march. Interpolated: pass the sky's march (W = march.azimuths).
-  MarchOptions march = sun_march_options();
+  horizon::MarchOptions march = sun_march_options();
   // Marched: also march at A_s ± δ (3 rays instead of 1). Measured to matter little on
   // 30–90 m DEMs (penumbra error 0.074 → 0.070), so off by default.
   bool disc_slope = false;
-  ExactMarch exact;            // Exact: step, max distance, curvature
+  horizon::ExactMarch exact;   // Exact: step, max distance, curvature
   int exact_columns = 17;      // Exact: azimuth samples across the disc, 2…65
   double radius = sky::kSunAngularRadius;  // angular radius of the disc (rad)
   unsigned threads = 0;        // workers over rows; 0 = hardware concurrency

@@ -198,7 +198,7 @@ class ScriptedSource final : public skylit::app::bench::TimingSource {
 };
 
 TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
-  using namespace skylit::app;
+  using namespace skylit::app::bench;
   skylit::terrain::HeightField field(4, 4, 1.0);
   const BenchScene scene{"tiny", field};
   BenchConfig config;
@@ -232,7 +232,7 @@ TEST(BenchRunScene, MedianOverTheTimedRunsAndSkipsWhatTheBackendLacks) {
 // the sweep's horizons (W, K, lines; n and wedge after them) with s = 1: no two
 // settings compute the same thing, and a march never lends its skyview to a sweep.
 TEST(BenchSweeps, SweepSettingsVaryOnlyWhatChangesThem) {
-  using namespace skylit::app;
+  using namespace skylit::app::bench;
   using skylit::horizon::HorizonMethod;
   const skylit::horizon::MarchOptions d;
   EXPECT_EQ(sweep_settings("smoke").size(), 3u);
@@ -326,7 +326,7 @@ TEST(QualityPresets, ParseApplyAndOrder) {
 // it caches: a kept one must not serve a setting that differs in any of them (the
 // bench's cache once ignored the horizon method).
 TEST(BenchTiming, PipelinesDifferWhereSettingsDiffer) {
-  using namespace skylit::app;
+  using namespace skylit::app::bench;
   const auto list = sweep_settings("default");
   for (std::size_t a = 0; a < list.size(); ++a)
     for (std::size_t b = 0; b < list.size(); ++b)

@@ -76,16 +76,16 @@ TEST(SkyviewSlice, MatchesVisibilityOracleWithTiltedNormal) {
   for (int k = 0; k < w; ++k) sigma[k] = horizon_geo(band_azimuth(k, w));
   shading::Occluders occ;
   occ.horizon = [&](double phi) { return std::max(0.0, horizon_geo(geographic_from_math(phi))); };
-  EXPECT_NEAR(skyview_from_horizon(sigma, n), shading::cosine_weighted_visibility(occ, n, 4096), 2e-6);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, n), shading::cosine_weighted_visibility(occ, n, 4096), 2e-6);
 }
 
 TEST(SkyviewSlice, OpenFlatAndTiltedGround) {
-  EXPECT_NEAR(skyview_from_horizon(std::vector<double>(7, 0.0), {0, 0, 1}), 1.0, 1e-14);
-  EXPECT_NEAR(svf_from_horizon(std::vector<double>(7, -0.1)), 1.0, 1e-15);
+  EXPECT_NEAR(shading::skyview_from_horizon(std::vector<double>(7, 0.0), {0, 0, 1}), 1.0, 1e-14);
+  EXPECT_NEAR(shading::svf_from_horizon(std::vector<double>(7, -0.1)), 1.0, 1e-15);
   // Below-horizontal horizons do not add sky.
-  EXPECT_NEAR(skyview_from_horizon(std::vector<double>(64, -0.3), {0, 0, 1}), 1.0, 1e-14);
+  EXPECT_NEAR(shading::skyview_from_horizon(std::vector<double>(64, -0.3), {0, 0, 1}), 1.0, 1e-14);
   const double s = 40 * kDeg;
-  EXPECT_NEAR(skyview_from_horizon(std::vector<double>(360, 0.0), {std::sin(s), 0, std::cos(s)}),
+  EXPECT_NEAR(shading::skyview_from_horizon(std::vector<double>(360, 0.0), {std::sin(s), 0, std::cos(s)}),
               (1 + std::cos(s)) / 2, 1e-12);
 }
 
@@ -93,8 +93,8 @@ TEST(ExactHorizon, FlatPlaneIsHorizontalAndOpen) {
   const auto f = test::make_field(33, 33, 10.0);
   const auto s = exact_horizons(f, 16, 16, 64, flat_earth());
   for (double v : s) EXPECT_EQ(v, 0.0);
-  EXPECT_DOUBLE_EQ(svf_from_horizon(s), 1.0);
-  EXPECT_NEAR(skyview_from_horizon(s, horn_normal(f, 16, 16)), 1.0, 1e-14);
+  EXPECT_DOUBLE_EQ(shading::svf_from_horizon(s), 1.0);
+  EXPECT_NEAR(shading::skyview_from_horizon(s, horn_normal(f, 16, 16)), 1.0, 1e-14);
 }
 
 TEST(ExactHorizon, TiltedPlaneSkyviewIsOnePlusCosOverTwo) {
@@ -103,7 +103,7 @@ TEST(ExactHorizon, TiltedPlaneSkyviewIsOnePlusCosOverTwo) {
   const auto sigma = exact_horizons(f, 20, 20, 720, flat_earth());
   // Uphill (east) the plane itself is the horizon.
   EXPECT_NEAR(sigma[180], s, 1e-6);
-  EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, 20, 20)), (1 + std::cos(s)) / 2, 1e-6);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, horn_normal(f, 20, 20)), (1 + std::cos(s)) / 2, 1e-6);
 }
 
 TEST(ExactHorizon, CircularPitCentre) {
@@ -114,8 +114,8 @@ TEST(ExactHorizon, CircularPitCentre) {
   const double gamma = test::pit_rim_elevation(r0, r1, depth, 64.0);
   const auto sigma = exact_horizons(f, n / 2, n / 2, 720, flat_earth());
   for (double v : sigma) EXPECT_NEAR(v, gamma, 1.5e-3);  // bilinear: ≤ h''dx²/8 / r ≈ 5e-4
-  EXPECT_NEAR(svf_from_horizon(sigma), 1 - std::sin(gamma), 1.5e-3);
-  EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, n / 2, n / 2)), std::pow(std::cos(gamma), 2), 1.5e-3);
+  EXPECT_NEAR(shading::svf_from_horizon(sigma), 1 - std::sin(gamma), 1.5e-3);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, horn_normal(f, n / 2, n / 2)), std::pow(std::cos(gamma), 2), 1.5e-3);
 }
 
 TEST(ExactHorizon, FiniteWallMatchesClosedForm) {
@@ -129,8 +129,8 @@ TEST(ExactHorizon, FiniteWallMatchesClosedForm) {
   const auto sigma = exact_horizons(f, ir, jr, 2880, flat_earth());
   // Due west (A = 270°): the full wall height at distance D.
   EXPECT_NEAR(sigma[2160], std::atan(a), 1e-12);
-  EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, ir, jr)), test::wall_skyview(a, psi_l), 1e-3);
-  EXPECT_NEAR(svf_from_horizon(sigma), test::wall_svf(a, psi_l), 1e-3);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, horn_normal(f, ir, jr)), test::wall_skyview(a, psi_l), 1e-3);
+  EXPECT_NEAR(shading::svf_from_horizon(sigma), test::wall_svf(a, psi_l), 1e-3);
 }
 
 TEST(ExactHorizon, InfiniteWallLimit) {
@@ -141,7 +141,7 @@ TEST(ExactHorizon, InfiniteWallLimit) {
   const double gamma = std::atan(8.0 / 4.0);
   const auto sigma = exact_horizons(f, ir, n / 2, 1440, flat_earth());
   // Rays within atan(4/100) of the wall's direction leave the grid first: ≤ 2e-3.
-  EXPECT_NEAR(skyview_from_horizon(sigma, {0, 0, 1}), (1 + std::cos(gamma)) / 2, 3e-3);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, {0, 0, 1}), (1 + std::cos(gamma)) / 2, 3e-3);
 }
 
 TEST(ExactHorizon, EarthCurvatureLowersDistantTerrain) {

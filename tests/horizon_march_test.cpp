@@ -135,7 +135,7 @@ TEST(HorizonMarchAccuracy, TiltedPlaneAwayFromTheEdges) {
     const HorizonMarcher m(f, o);
     const auto sigma = march_horizons(m, 64, 64, 32);
     EXPECT_NEAR(sigma[8], s, 2e-3) << level_sampling_name(sampling);  // uphill (east)
-    EXPECT_NEAR(skyview_from_horizon(sigma, horn_normal(f, 64, 64)), (1 + std::cos(s)) / 2, 1e-3)
+    EXPECT_NEAR(shading::skyview_from_horizon(sigma, horn_normal(f, 64, 64)), (1 + std::cos(s)) / 2, 1e-3)
         << level_sampling_name(sampling);
   }
 }
@@ -159,8 +159,8 @@ TEST(HorizonMarchAccuracy, CircularPitCentre) {
   const auto sigma = march_horizons(m, n / 2, n / 2, 32);
   // Measured: rim 0.471 vs γ = 0.494 rad, svf +0.021, skyview +0.019.
   for (double v : sigma) EXPECT_NEAR(v, gamma - 0.02, 0.02);
-  EXPECT_NEAR(svf_from_horizon(sigma), 1 - std::sin(gamma), 0.03);
-  EXPECT_NEAR(skyview_from_horizon(sigma, {0, 0, 1}), std::pow(std::cos(gamma), 2), 0.03);
+  EXPECT_NEAR(shading::svf_from_horizon(sigma), 1 - std::sin(gamma), 0.03);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, {0, 0, 1}), std::pow(std::cos(gamma), 2), 0.03);
 }
 
 TEST(HorizonMarchAccuracy, FiniteWall) {
@@ -176,8 +176,8 @@ TEST(HorizonMarchAccuracy, FiniteWall) {
   const HorizonMarcher m(f, flat_earth());
   const auto sigma = march_horizons(m, ir, jr, 32);
   // Measured: skyview +0.027, svf +0.031 (the edge, blurred over ±t/2, looks lower).
-  EXPECT_NEAR(skyview_from_horizon(sigma, {0, 0, 1}), test::wall_skyview(a, psi_l), 0.045);
-  EXPECT_NEAR(svf_from_horizon(sigma), test::wall_svf(a, psi_l), 0.045);
+  EXPECT_NEAR(shading::skyview_from_horizon(sigma, {0, 0, 1}), test::wall_skyview(a, psi_l), 0.045);
+  EXPECT_NEAR(shading::svf_from_horizon(sigma), test::wall_svf(a, psi_l), 0.045);
 }
 
 TEST(HorizonMarchAccuracy, ThinFeaturesFadeWithDistance) {

@@ -29,6 +29,12 @@
 namespace skylit::horizon {
 namespace {
 
+using shading::compute_product;  // the reference pipeline's use of the sweep
+using shading::Product;
+using shading::ProductBands;
+using shading::ProductOptions;
+using shading::svf_from_horizon;
+using shading::uses_sweep;
 using terrain::HeightField;
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();

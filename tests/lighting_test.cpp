@@ -159,7 +159,7 @@ TEST(LitProducts, ShadowProductIsTheDiscFractionBehindAWall) {
     const ProductBands b = compute_product(f, Product::Shadow, o);
     ASSERT_EQ(b.bands, 1);
     EXPECT_EQ(b.band_names.front(), "shadow");
-    EXPECT_NEAR(b.at(0, i, c), sun_disc_fraction(e_deg * kDeg, sigma, 0.0), 2e-3) << du;
+    EXPECT_NEAR(b.at(0, i, c), sky::sun_disc_fraction(e_deg * kDeg, sigma, 0.0), 2e-3) << du;
     EXPECT_EQ(b.at(0, 50, 2), 1.0f);  // beyond the wall's end rows: open
   }
 }

@@ -66,7 +66,7 @@ terrain::HeightField synthetic(int w, int h) {
 // The march's sub-sampling (s = 1 too: the default sweep does not sub-sample).
 ProductOptions options(int s, int azimuths = 16) {
   ProductOptions o;
-  o.march.method = HorizonMethod::March;
+  o.march.method = horizon::HorizonMethod::March;
   o.march.azimuths = azimuths;
   o.subsample = s;
   return o;
@@ -75,7 +75,7 @@ ProductOptions options(int s, int azimuths = 16) {
 // The `horizon` product's floor (degrees): the receiver's ground at the first march
 // distance, −atan(t₁/(2R_eff)) (products.h).
 double floor_deg(const terrain::HeightField& f, const ProductOptions& o) {
-  const double t1 = HorizonMarcher(f, o.march).distance(0);
+  const double t1 = horizon::HorizonMarcher(f, o.march).distance(0);
   return -std::atan(t1 / (2.0 * o.march.curvature.effective_radius())) * kDeg;
 }
 
@@ -177,7 +177,7 @@ TEST(Subsample, NodataAndEdgeSamplesFallBackToOwnMarch) {
   const int ni = 20, nj = 16;  // a coarse texel for s = 2 and s = 4
   f.valid[static_cast<std::size_t>(nj) * f.width + ni] = 0;
   const ProductOptions o1 = options(1);
-  const HorizonMarcher marcher(f, o1.march);
+  const horizon::HorizonMarcher marcher(f, o1.march);
   const ProductBands full = compute_product(f, Product::Horizon, o1);
   for (int s : {2, 4}) {
     const ProductBands sub = compute_product(f, Product::Horizon, options(s));
@@ -186,7 +186,7 @@ TEST(Subsample, NodataAndEdgeSamplesFallBackToOwnMarch) {
       for (int i = 0; i < f.width; ++i) {
         const Mix x = mix_of(i, f.width, s), y = mix_of(j, f.height, s);
         for (int k = 0; k < full.bands; ++k) {
-          const Heading u = heading_from_geographic(band_azimuth(k, full.bands));
+          const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(k, full.bands));
           bool nodata = false, unmarched = false;
           for (int ci : x.at)
             for (int cj : y.at) {

@@ -59,6 +59,7 @@ TEST(Products, NegativeHorizonOnlyFromEarthCurvature) {
     for (int i = 0; i < 33; ++i) f.at(i, j) = static_cast<float>(-10.0 * std::hypot(i - 16, j - 16));
   ProductOptions o = flat_earth();
   o.march.azimuths = 4;
+  using horizon::HorizonMethod;
   for (const auto& [exact, method] : {std::pair{false, HorizonMethod::March}, std::pair{false, HorizonMethod::Sweep},
                                       std::pair{true, HorizonMethod::March}}) {
     o.exact = exact;
@@ -68,7 +69,7 @@ TEST(Products, NegativeHorizonOnlyFromEarthCurvature) {
     o.march.curvature.enabled = true;
     const float h = compute_product(f, Product::Horizon, o).at(1, 16, 16);
     // t₁: half a texel (exact, sweep) or the first march distance.
-    const double t1 = exact || method == HorizonMethod::Sweep ? 250.0 : HorizonMarcher(f, o.march).distance(0);
+    const double t1 = exact || method == HorizonMethod::Sweep ? 250.0 : horizon::HorizonMarcher(f, o.march).distance(0);
     EXPECT_LT(h, 0.0f);
     EXPECT_NEAR(h, -std::atan(t1 / (2 * o.march.curvature.effective_radius())) * 180 / kPi, 1e-9);
   }

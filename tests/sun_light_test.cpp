@@ -57,7 +57,7 @@ TEST(SunShadow, TiltedPlaneTerminatorIsTheClosedFormPenumbra) {
     for (double du : {-0.7, -0.2, 0.0, 0.4, 0.9}) {
       const double plane = std::atan(std::tan(s) * std::sin(az));
       const SunAngles sun{az, plane + du * kR / 1.0};
-      const double expected = disc_fraction_above_line(std::asin(glm::dot(n, sun_direction(sun))) / kR);
+      const double expected = sky::disc_fraction_above_line(std::asin(glm::dot(n, sun_direction(sun))) / kR);
       for (int variant = 0; variant < 4; ++variant) {
         const SunHorizon h = variant < 3 ? kAll[variant] : SunHorizon::Marched;
         auto o = flat_earth(h);
@@ -102,7 +102,7 @@ TEST(SunShadow, WallShadowEdgeMatchesClosedFormAtAnyAzimuth) {
     const double slope = -a * std::sin(psi) / (1.0 + a * a * std::cos(psi) * std::cos(psi));
     for (double du : {-0.6, -0.2, 0.3, 0.8}) {
       const SunAngles sun{270 * kDeg + psi, sigma + du * kR};
-      const double expected = sun_disc_fraction(sun.elevation, sigma, slope);
+      const double expected = sky::sun_disc_fraction(sun.elevation, sigma, slope);
       EXPECT_GT(expected, 0.02);
       EXPECT_LT(expected, 0.98);
       const auto v = shadow_fraction_field(f, sun, flat_earth(SunHorizon::Exact));
@@ -132,7 +132,7 @@ TEST(SunShadow, MarchedAndInterpolatedApproachTheExactHorizonOnRoughTerrain) {
   // ridges and lights texels that are in shadow.
   const double e_marched = mean_abs(shadow_fraction_field(f, sun, flat_earth(SunHorizon::Marched)));
   auto sky = flat_earth(SunHorizon::Marched);
-  sky.march = MarchOptions{};
+  sky.march = horizon::MarchOptions{};
   sky.march.curvature.enabled = false;
   const double e_sky = mean_abs(shadow_fraction_field(f, sun, sky));
   EXPECT_LT(e_marched, 0.02);

@@ -89,11 +89,11 @@ using Clock = std::chrono::steady_clock;
 
 // Bands of the raw horizons a product needs, as compute_product chooses them.
 int horizon_bands(Product product, const shading::ProductOptions& o) {
-  if (product == Product::Horizon) return o.march.azimuths;
+  if (shading::traits(product).band_per_azimuth) return o.march.azimuths;
   return o.exact ? o.exact_options.sky_azimuths : o.march.azimuths;
 }
 
-bool needs_visibility(Product product) { return product == Product::Shaded || product == Product::Irradiance; }
+bool needs_visibility(Product product) { return shading::traits(product).needs_visibility; }
 
 // Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
 // the wedge operator's math-frame samples φ_j = j·2π/W for shaded and irradiance.
@@ -325,9 +325,8 @@ bool same_baked_lighting(Product product, const shading::ProductOptions& a, cons
 }
 
 bool gpu_supports(Product product, const shading::ProductOptions& options) {
-  const bool known = product == Product::Horizon || product == Product::Svf || product == Product::Skyview ||
-                     product == Product::Shaded || product == Product::Shadow || product == Product::Irradiance;
-  if (!known) return false;
+  const auto known = shading::all_product_traits();  // the pipeline has every product
+  if (static_cast<std::size_t>(product) >= known.size()) return false;
   // Shaded and irradiance: every ShadedOptions::mode (gpu/shading_setup.h) and both
   // wedge interpolations (ShadedOptions::wedge). Sub-sampling: every s that
   // validate_subsample accepts; the pipeline's constructor throws its message for the others.
@@ -463,7 +462,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   validate_options(product, options);
   Impl& k = *mImpl;
   const bool lit = shading::uses_lighting(product, options);
-  if (sun_lit(product, options) || product == Product::Shadow) {
+  if (sun_lit(product, options) || shading::traits(product).sun_only) {
     // Sun shadow kernel: the sun's angles as compute_product takes them from the lighting.
     const double disc_radius = shading::SunShadowOptions{}.radius;
     GlslDefines sun;
@@ -485,7 +484,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     k.sun_uniforms = sun_uniforms(options.lighting->sun.direction, k.sun_heading);
     k.sun_kernel(false);  // the march's variant now; the sweep's at its first field
   }
-  if (product == Product::Shadow) return;  // the sun kernel alone
+  if (shading::traits(product).sun_only) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);
   k.band_headings = band_headings(product, k.azimuths);
   std::vector<float> headings;
@@ -656,7 +655,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   k.compile_ms = 0.0;
 
   const int w = field.width, h = field.height, bands = k.azimuths;
-  const int out_bands = mProduct == Product::Horizon ? bands : needs_visibility(mProduct) ? k.channels : 1;
+  const int out_bands = shading::band_count(mProduct, mOptions);
   const std::size_t texels = field.size();
 
   if (auto night = shading::night_shadow(mProduct, {mOptions.lighting, {}, std::nullopt}, field)) {
@@ -666,7 +665,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     if (timings) *timings = t;
     return std::move(*night);
   }
-  if (mProduct == Product::Shadow) {  // the sun pass alone
+  if (shading::traits(mProduct).sun_only) {  // the sun pass alone
     const auto upload_start = Clock::now();
     t.uploaded_bytes = k.field.sync(field);
     k.field.heights().bind_storage(kHeights);
@@ -938,18 +937,15 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
 
   // Stage 4: the output transfer.
   throw_on_gl_error("GpuProductPipeline::compute");
-  if (mProduct == Product::Horizon)
-    for (int b = 0; b < bands; ++b) out.band_names.push_back(shading::horizon_band_name(b, bands));
-  else
-    out.band_names.emplace_back(shading::product_name(mProduct));
+  out.band_names = shading::band_names(mProduct, mOptions);
   const bool lit = shading::uses_lighting(mProduct, mOptions);
-  if (mProduct == Product::Shaded && lit && k.channels == 3) out.band_names = {"red", "green", "blue"};
+  const bool eight_bit = shading::traits(mProduct).eight_bit;
   if (on_gpu) {  // linear values: display_scale() says how to tone-map them
-  } else if (mProduct == Product::Shaded && lit) {
+  } else if (eight_bit && lit) {
     // The tone map of lighting.h, on the host with the reference's own function.
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::srgb_code_value(static_cast<double>(v) * k.display_per_irradiance);
-  } else if (mProduct == Product::Shaded) {
+  } else if (eight_bit) {
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::srgb_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure);
   }

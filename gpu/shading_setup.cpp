@@ -60,7 +60,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
   bool z_symmetric = true;  // the uniform sky
   if (lit) {
     const shading::Lighting& l = *options.lighting;
-    const bool rgb = product == shading::Product::Shaded && l.colour;
+    const bool rgb = shading::rgb_bands(product, options);
     out.channels = rgb ? 3 : 1;
     z_symmetric = l.sky && l.sky->azimuthally_symmetric();
     for (int c = 0; c < out.channels; ++c) {

@@ -4,37 +4,60 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
 namespace skylit::shading {
 
-std::string_view product_name(Product p) {
-  switch (p) {
-    case Product::Horizon: return "horizon";
-    case Product::Svf: return "svf";
-    case Product::Skyview: return "skyview";
-    case Product::Shaded: return "shaded";
-    case Product::Shadow: return "shadow";
-    case Product::Irradiance: return "irradiance";
-  }
-  return "unknown";
-}
-
 namespace {
-constexpr Product kProducts[] = {Product::Horizon, Product::Svf,    Product::Skyview,
-                                 Product::Shaded,  Product::Shadow, Product::Irradiance};
+
+// One row per product, in the enum's order.
+constexpr ProductTraits kTraits[] = {
+    {.product = Product::Horizon, .name = "horizon", .band_per_azimuth = true},
+    {.product = Product::Svf, .name = "svf"},
+    {.product = Product::Skyview, .name = "skyview"},
+    {.product = Product::Shaded, .name = "shaded", .rgb_when_colour = true, .needs_visibility = true, .lit = true,
+     .eight_bit = true},
+    {.product = Product::Shadow, .name = "shadow", .lit = true, .needs_sun = true, .sun_only = true},
+    {.product = Product::Irradiance, .name = "irradiance", .needs_visibility = true, .lit = true, .needs_sun = true},
+};
+
+constexpr bool in_enum_order() {
+  for (std::size_t i = 0; i < std::size(kTraits); ++i)
+    if (static_cast<std::size_t>(kTraits[i].product) != i) return false;
+  return true;
+}
+static_assert(in_enum_order(), "kTraits: one row per Product, in the enum's order");
+
+bool known(Product p) { return static_cast<std::size_t>(p) < std::size(kTraits); }
+
 }  // namespace
 
+std::span<const ProductTraits> all_product_traits() { return kTraits; }
+
+const ProductTraits& traits(Product p) {
+  if (!known(p)) throw std::invalid_argument("unknown product " + std::to_string(static_cast<int>(p)));
+  return kTraits[static_cast<std::size_t>(p)];
+}
+
+std::string_view product_name(Product p) { return known(p) ? traits(p).name : "unknown"; }
+
+std::string horizon_band_name(int k, int azimuths) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / azimuths);
+  return buf;
+}
+
 std::optional<Product> parse_product(std::string_view name) {
-  for (Product p : kProducts)
-    if (product_name(p) == name) return p;
+  for (const ProductTraits& t : kTraits)
+    if (t.name == name) return t.product;
   return std::nullopt;
 }
 
 std::string product_names() {
   std::string out;
-  for (Product p : kProducts) out += (out.empty() ? "" : ", ") + std::string(product_name(p));
+  for (const ProductTraits& t : kTraits) out += (out.empty() ? "" : ", ") + std::string(t.name);
   return out;
 }
 
@@ -45,8 +68,28 @@ void validate_subsample(const ProductOptions& options) {
 }
 
 bool uses_lighting(Product product, const ProductOptions& options) {
-  return product == Product::Shadow || product == Product::Irradiance ||
-         (product == Product::Shaded && options.lighting.has_value());
+  const ProductTraits& t = traits(product);
+  return t.needs_sun || (t.lit && options.lighting.has_value());
+}
+
+bool rgb_bands(Product product, const ProductOptions& options) {
+  return traits(product).rgb_when_colour && uses_lighting(product, options) && options.lighting &&
+         options.lighting->colour;
+}
+
+int band_count(Product product, const ProductOptions& options) {
+  if (traits(product).band_per_azimuth) return options.march.azimuths;
+  return rgb_bands(product, options) ? 3 : 1;
+}
+
+std::vector<std::string> band_names(Product product, const ProductOptions& options) {
+  if (traits(product).band_per_azimuth) {
+    std::vector<std::string> names;
+    for (int k = 0; k < options.march.azimuths; ++k) names.push_back(horizon_band_name(k, options.march.azimuths));
+    return names;
+  }
+  if (rgb_bands(product, options)) return {"red", "green", "blue"};
+  return {std::string(traits(product).name)};
 }
 
 double svf_from_horizon(const std::vector<double>& sigma) {

@@ -41,6 +41,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,26 @@ namespace skylit::shading {
 // New products are appended: the GPU hands the enum's values to its shaders.
 enum class Product { Horizon, Svf, Skyview, Shaded, Shadow, Irradiance };
 
+// What kind of result a product is: the one table every backend and front end reads
+// (nothing else tests for particular products to decide these).
+struct ProductTraits {
+  Product product;
+  std::string_view name;          // "horizon", "svf", …
+  bool band_per_azimuth = false;  // one band per azimuth of the march (horizon); else one band
+  bool rgb_when_colour = false;   // R, G, B bands when the lighting is colour (shaded)
+  bool needs_visibility = false;  // SH visibility from the horizons, shaded by sky tables (shaded, irradiance)
+  bool lit = false;               // uses ProductOptions::lighting: always (needs_sun) or when it is set (shaded)
+  bool needs_sun = false;         // requires the lighting's sun and sky (shadow, irradiance)
+  bool sun_only = false;          // the sun's shadow pass alone, no sky horizons (shadow)
+  bool eight_bit = false;         // sRGB code values 1…255 as floats, 0 left for nodata (shaded)
+};
+
+// Every product's traits, in the enum's order.
+std::span<const ProductTraits> all_product_traits();
+// The row of `p`; throws std::invalid_argument for a value outside the enum.
+const ProductTraits& traits(Product p);
+
+// traits(p).name; "unknown" for a value outside the enum.
 std::string_view product_name(Product p);
 // "horizon", "svf", "skyview", "shaded", "shadow", "irradiance"; nullopt otherwise.
 std::optional<Product> parse_product(std::string_view name);
@@ -105,6 +126,12 @@ void validate_subsample(const ProductOptions& options);
 // True when `product` with `options` uses the lighting (sun shadows, sky tables of a
 // lit sky): shadow, irradiance, and shaded with options.lighting set.
 bool uses_lighting(Product product, const ProductOptions& options);
+// True when its bands are R, G, B: a lit rgb_when_colour product under a colour lighting.
+bool rgb_bands(Product product, const ProductOptions& options);
+// Number and names of its bands: W azimuths ("horizon_az045.0", …), "red", "green",
+// "blue", or one band named after the product.
+int band_count(Product product, const ProductOptions& options);
+std::vector<std::string> band_names(Product product, const ProductOptions& options);
 
 // Float bands, band-major: value(b, i, j) = data[(b·height + j)·width + i].
 struct ProductBands {

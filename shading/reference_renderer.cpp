@@ -221,19 +221,15 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   if (lit && !options.lighting)
     throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
   if (lit) validate(*options.lighting);
-  const bool rgb = lit && product == Product::Shaded && options.lighting->colour;
+  const ProductTraits& kind = traits(product);
+  const bool rgb = rgb_bands(product, options);
 
   ProductBands out;
   out.width = field.width;
   out.height = field.height;
-  out.bands = product == Product::Horizon ? w_march : rgb ? 3 : 1;
+  out.bands = band_count(product, options);
   out.data.assign(static_cast<std::size_t>(out.bands) * field.size(), kNaN);
-  if (product == Product::Horizon)
-    for (int k = 0; k < w_march; ++k) out.band_names.push_back(horizon_band_name(k, w_march));
-  else if (rgb)
-    out.band_names = {"red", "green", "blue"};
-  else
-    out.band_names.emplace_back(product_name(product));
+  out.band_names = band_names(product, options);
   auto put = [&](int b, int i, int j, double v) {
     out.data[(static_cast<std::size_t>(b) * field.height + j) * field.width + i] = static_cast<float>(v);
   };
@@ -241,9 +237,9 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   // Sun: the visible disc fraction of every texel, in its own pass (its own march).
   std::vector<float> shadow;
   const bool sun_lit = lit && sky::luminance(options.lighting->sun.dni) > 0.0;
-  if (product == Product::Shadow || sun_lit) {
+  if (kind.sun_only || sun_lit) {
     const glm::dvec3& s = options.lighting->sun.direction;
-    const bool alone = product == Product::Shadow;
+    const bool alone = kind.sun_only;
     shadow = shadow_fraction_field(field, {sky::azimuth_of(s), sky::elevation_of(s)}, sun_shadow_options(options),
                                    [&](double f) {
                                      if (progress) progress(alone ? f : kSunShare * f);
@@ -260,7 +256,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   // Shading set-up: wedge operator, and either the default shading mode (sky × BRDF
   // table, Lambert) under a uniform sky of radiance 1 above the horizontal, or the
   // lighting's sky tables and sun.
-  const bool needs_visibility = product == Product::Shaded || product == Product::Irradiance;
+  const bool needs_visibility = kind.needs_visibility;
   const sh::WedgeOperator* wedge = nullptr;
   std::unique_ptr<SkyShading> uniform_sky;
   std::unique_ptr<LitShading> lighting;
@@ -289,9 +285,9 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   timings_.horizons_reused = reuse;
 
   const std::vector<Heading> headings =
-      product == Product::Horizon ? geographic_headings(w_march)
-      : needs_visibility          ? math_headings(w_sky)
-                                  : geographic_headings(w_sky);
+      kind.band_per_azimuth ? geographic_headings(w_march)
+      : needs_visibility    ? math_headings(w_sky)
+                            : geographic_headings(w_sky);
 
   // Raw horizons: with sub-sampling, the coarse texels are marched first.
   HorizonSource horizons(oracle, field, options, headings);
@@ -348,7 +344,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
           const double sun = shadow.empty() ? 0.0 : shadow[texel];
           for (int c = 0; c < lighting->channels(); ++c) {
             const double e = lighting->irradiance(c, vis, log_vis, n, sun);
-            put(c, i, j, product == Product::Irradiance ? e : srgb_code_value(e * display_per_irradiance));
+            put(c, i, j, kind.eight_bit ? srgb_code_value(e * display_per_irradiance) : e);
           }
           break;
         }

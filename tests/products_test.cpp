@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,40 @@ TEST(ProductNames, RoundTrip) {
     EXPECT_EQ(parse_product(product_name(p)), p);
   EXPECT_FALSE(parse_product("hillshade"));
   EXPECT_EQ(product_names(), "horizon, svf, skyview, shaded, shadow, irradiance");
+}
+
+// The traits table (DESIGN.md "Products"), and the band layout every backend takes from it.
+TEST(ProductTraits, TableMatchesTheProductDefinitions) {
+  ASSERT_EQ(all_product_traits().size(), 6u);
+  for (const ProductTraits& t : all_product_traits()) {
+    EXPECT_EQ(&traits(t.product), &t);
+    EXPECT_EQ(product_name(t.product), t.name);
+  }
+  EXPECT_THROW(traits(static_cast<Product>(99)), std::invalid_argument);
+  EXPECT_EQ(product_name(static_cast<Product>(99)), "unknown");
+  EXPECT_TRUE(traits(Product::Horizon).band_per_azimuth);
+  EXPECT_TRUE(traits(Product::Shaded).eight_bit && traits(Product::Shaded).rgb_when_colour);
+  EXPECT_FALSE(traits(Product::Irradiance).eight_bit);
+  for (Product p : {Product::Shaded, Product::Irradiance}) EXPECT_TRUE(traits(p).needs_visibility);
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shadow})
+    EXPECT_FALSE(traits(p).needs_visibility);
+  EXPECT_TRUE(traits(Product::Shadow).sun_only);
+
+  ProductOptions o;
+  o.march.azimuths = 8;
+  for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
+    EXPECT_FALSE(uses_lighting(p, o)) << product_name(p);
+  for (Product p : {Product::Shadow, Product::Irradiance}) EXPECT_TRUE(uses_lighting(p, o)) << product_name(p);
+  EXPECT_EQ(band_count(Product::Horizon, o), 8);
+  EXPECT_EQ(band_names(Product::Horizon, o)[2], "horizon_az090.0");
+  EXPECT_EQ(band_names(Product::Svf, o), std::vector<std::string>{"svf"});
+  o.lighting = Lighting{};
+  o.lighting->colour = true;
+  EXPECT_TRUE(uses_lighting(Product::Shaded, o));
+  EXPECT_TRUE(rgb_bands(Product::Shaded, o));
+  EXPECT_FALSE(rgb_bands(Product::Irradiance, o));  // broadband
+  EXPECT_EQ(band_names(Product::Shaded, o), (std::vector<std::string>{"red", "green", "blue"}));
+  EXPECT_EQ(band_count(Product::Irradiance, o), 1);
 }
 
 TEST(Products, HorizonBandsAreGeographicAzimuthsClockwiseFromNorth) {

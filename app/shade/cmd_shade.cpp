@@ -250,15 +250,14 @@ int run_shade(const ShadeArgs& a) {
     throw std::invalid_argument("unknown --product '" + a.product + "' (" + shading::product_names() +
                                 ", insolation, sun-hours)");
   const std::optional<shading::TimeSpec> times = series_spec(a, summed);
-  using shading::Product;
-  if (times && !summed && *product != Product::Shadow && *product != Product::Irradiance && *product != Product::Shaded)
+  const shading::ProductTraits& kind = shading::traits(*product);
+  if (times && !summed && !kind.lit)
     throw std::invalid_argument("a --time series needs a product lit by the sun: shadow, irradiance, shaded, "
                                 "insolation or sun-hours (not " + a.product + ")");
   OutputSpec out;
   if (!times || summed) out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
   const gpu::Backend backend = parse_backend_arg(a.backend);
-  const bool lit = *product == shading::Product::Shadow || *product == shading::Product::Irradiance ||
-                   (*product == shading::Product::Shaded && !sky_only_default(a));
+  const bool lit = kind.needs_sun || (kind.lit && !sky_only_default(a));
   shading::LightingRequest request = a.lighting;
   request.sun = !a.no_sun;
   if (times) request.time.clear();  // each frame sets its own

@@ -44,7 +44,7 @@ OutputSpec resolve_output(const std::string& path, const std::string& format, sh
   spec.path = path;
   spec.format = format.empty() ? format_from_extension(path) : canonical_format(format);
   spec.creation_options = creation_options;
-  spec.eight_bit = product == shading::Product::Shaded;
+  spec.eight_bit = shading::traits(product).eight_bit;
   spec.overwrite = overwrite;
   for (const auto& co : creation_options)
     if (co.find('=') == std::string::npos || co.front() == '=')

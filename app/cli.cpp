@@ -1,5 +1,6 @@
 #include "app/commands.h"
 #include "app/common/gdal_style_args.h"
+#include "app/common/option_flags.h"
 
 #include <algorithm>
 #include <exception>
@@ -30,7 +31,7 @@ int run_cli(int argc, char** argv) {
   try {
     return run ? run() : 0;
   } catch (const std::exception& e) {
-    std::cerr << "skylit: error: " << e.what() << "\n";
+    std::cerr << "skylit: error: " << message_with_flags(e) << "\n";
     return 1;
   }
 }

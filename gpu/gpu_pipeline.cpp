@@ -198,7 +198,8 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   if (max_samples > max_size)
     throw std::runtime_error("GPU sweep: a line of " + std::to_string(max_samples) +
                              " samples exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size) + " (the sweep takes " +
-                             std::to_string((max_size + 1) / 2) + " texels along an azimuth; --horizons march has no such limit)");
+                             std::to_string((max_size + 1) / 2) +
+                             " texels along an azimuth; the march method has no such limit)");
   int lanes = 1;
   for (const horizon::SweepGeometry& g : geometry) lanes = std::max(lanes, g.lines);
   const std::size_t budget = software_renderer() ? kSoftwareHullBudgetBytes : kHullBudgetBytes;

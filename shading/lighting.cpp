@@ -28,6 +28,11 @@ void require(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument(message);
 }
 
+// `option`: the LightingRequest member at fault (LightingError::option).
+void require(bool ok, const char* option, const std::string& message) {
+  if (!ok) throw LightingError(option, message);
+}
+
 // Library messages (OIIO's) may span lines; the CLI prints one.
 std::string one_line(std::string text) {
   for (char& c : text)
@@ -52,9 +57,9 @@ std::shared_ptr<const sky::SkyModel> build_sky(const SkySpec& spec, const glm::d
       try {
         return std::make_shared<sky::EnvMapSky>(sky::EnvMapSky::load(spec.path, opt));
       } catch (const std::invalid_argument& err) {
-        throw std::invalid_argument("--sky " + spec.path + ": " + one_line(err.what()));
+        throw LightingError("sky", "sky map " + spec.path + ": " + one_line(err.what()));
       } catch (const std::exception& err) {
-        throw std::runtime_error("--sky " + spec.path + ": " + one_line(err.what()));
+        throw std::runtime_error("sky map " + spec.path + ": " + one_line(err.what()));
       }
     }
   }
@@ -85,13 +90,13 @@ SkySpec parse_sky_spec(std::string_view text) {
     int type = 0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), type);
     require(ec == std::errc() && end == digits.data() + digits.size() && type >= 1 && type <= sky::kCieTraditionalOvercast,
-            "--sky " + std::string(text) + ": the CIE sky type must be an integer 1..16");
+            "sky", "sky " + std::string(text) + ": the CIE sky type must be an integer 1..16");
     s.kind = SkySpec::Kind::Cie;
     s.cie_type = type;
     return s;
   }
-  require(text.find_first_of("./") != std::string_view::npos,
-          "unknown --sky '" + std::string(text) + "' (uniform, preetham, cie:<1..16>, or an .hdr/.exr file)");
+  require(text.find_first_of("./") != std::string_view::npos, "sky",
+          "unknown sky '" + std::string(text) + "' (uniform, preetham, cie:<1..16>, or an .hdr/.exr file)");
   s.kind = SkySpec::Kind::EnvMap;
   s.path = std::string(text);
   return s;
@@ -103,24 +108,33 @@ bool is_overcast(const SkySpec& spec) {
 }
 
 void validate(const LightingRequest& r) {
-  if (!r.time.empty()) sky::parse_utc_time(r.time);  // throws with the rule it broke
+  if (!r.time.empty()) {
+    try {
+      sky::parse_utc_time(r.time);
+    } catch (const std::invalid_argument& err) {  // names the rule it broke
+      throw LightingError("time", err.what());
+    }
+  }
   if (r.latitude_deg)
-    require(std::isfinite(*r.latitude_deg) && std::abs(*r.latitude_deg) <= 90.0,
-            "--lat " + number(*r.latitude_deg) + " outside -90..90 degrees");
+    require(std::isfinite(*r.latitude_deg) && std::abs(*r.latitude_deg) <= 90.0, "latitude_deg",
+            "latitude " + number(*r.latitude_deg) + " outside -90..90 degrees");
   if (r.longitude_deg)
-    require(std::isfinite(*r.longitude_deg) && std::abs(*r.longitude_deg) <= 180.0,
-            "--lon " + number(*r.longitude_deg) + " outside -180..180 degrees");
-  require(r.latitude_deg.has_value() == r.longitude_deg.has_value(), "give both --lat and --lon, or neither");
-  require(std::isfinite(r.height_m), "observer height must be finite");
+    require(std::isfinite(*r.longitude_deg) && std::abs(*r.longitude_deg) <= 180.0, "longitude_deg",
+            "longitude " + number(*r.longitude_deg) + " outside -180..180 degrees");
+  require(r.latitude_deg.has_value() == r.longitude_deg.has_value(), "place",
+          "give both latitude and longitude, or neither");
+  require(std::isfinite(r.height_m), "height_m", "observer height must be finite");
   if (r.sun_azimuth_deg)
-    require(std::isfinite(*r.sun_azimuth_deg), "--sun-azimuth must be a finite number of degrees");
+    require(std::isfinite(*r.sun_azimuth_deg), "sun_azimuth_deg",
+            "the sun's azimuth must be a finite number of degrees");
   if (r.sun_elevation_deg)
-    require(std::isfinite(*r.sun_elevation_deg) && std::abs(*r.sun_elevation_deg) <= 90.0,
-            "--sun-elevation " + number(*r.sun_elevation_deg) + " outside -90..90 degrees");
+    require(std::isfinite(*r.sun_elevation_deg) && std::abs(*r.sun_elevation_deg) <= 90.0, "sun_elevation_deg",
+            "sun elevation " + number(*r.sun_elevation_deg) + " outside -90..90 degrees");
   require(std::isfinite(r.turbidity) && r.turbidity >= sky::kMinTurbidity && r.turbidity <= sky::kMaxTurbidity,
-          "--turbidity " + number(r.turbidity) + " outside " + number(sky::kMinTurbidity) + ".." +
+          "turbidity",
+          "turbidity " + number(r.turbidity) + " outside " + number(sky::kMinTurbidity) + ".." +
               number(sky::kMaxTurbidity));
-  require(std::isfinite(r.sky_scale) && r.sky_scale > 0.0, "--sky-scale must be > 0");
+  require(std::isfinite(r.sky_scale) && r.sky_scale > 0.0, "sky_scale", "the sky scale must be > 0");
   parse_sky_spec(r.sky);
 }
 
@@ -138,8 +152,8 @@ ResolvedLighting resolve_lighting(const LightingRequest& r, const std::optional<
   if (needs_place(r)) {
     std::optional<sky::Observer> at = place;
     if (r.latitude_deg) at = sky::Observer{*r.latitude_deg, *r.longitude_deg, r.height_m};
-    require(at.has_value(),
-            "--time needs the DEM's location, but the DEM has no CRS: give --lat and --lon (degrees)");
+    require(at.has_value(), "place",
+            "a time needs the DEM's location, but the DEM has no CRS: give a latitude and longitude (degrees)");
     // Apparent (refracted) elevation: where the sun is seen, and what air mass uses.
     const sky::SolarPosition p = sky::solar_position(sky::parse_utc_time(r.time), *at);
     out.sun_azimuth_deg = p.azimuth_deg;

@@ -31,8 +31,10 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace skylit::shading {
 
@@ -65,7 +67,7 @@ struct SkySpec {
 };
 
 // "uniform", "preetham", "cie:<1..16>", or a path to an image (anything with a '.' or
-// '/'). Throws std::invalid_argument with a one-line message otherwise.
+// '/'). Throws LightingError (option "sky") with a one-line message otherwise.
 SkySpec parse_sky_spec(std::string_view text);
 bool is_overcast(const SkySpec& spec);
 
@@ -84,10 +86,25 @@ struct LightingRequest {
 
 // Every check that needs neither the DEM nor the sky map: the time parses with an
 // explicit zone, latitude/longitude/angles in range, sky name and CIE type, turbidity,
-// scale. Throws std::invalid_argument (one line).
+// scale. Throws LightingError (one line).
 void validate(const LightingRequest& request);
 // True when the sun's position must come from the time and a place.
 bool needs_place(const LightingRequest& request);
+
+// What parse_sky_spec, validate(LightingRequest) and resolve_lighting throw for a request
+// that cannot work. option(): the LightingRequest member at fault ("time",
+// "latitude_deg", "longitude_deg", "height_m", "sun_azimuth_deg", "sun_elevation_deg",
+// "sky", "turbidity", "sky_scale"), or "place" when a time needs latitude_deg and
+// longitude_deg. Messages name no command-line flag; a front end adds its own for option().
+class LightingError : public std::invalid_argument {
+ public:
+  LightingError(std::string option, const std::string& message)
+      : std::invalid_argument(message), option_(std::move(option)) {}
+  const std::string& option() const { return option_; }
+
+ private:
+  std::string option_;
+};
 
 struct ResolvedLighting {
   Lighting lighting;
@@ -96,9 +113,9 @@ struct ResolvedLighting {
   std::string summary;             // one line for the log
 };
 
-// `place` is used when the time needs one and the request gives no --lat/--lon (the
-// DEM's centre). Without a time or angles the sun is gdaldem's (315°, 45°). Throws
-// std::invalid_argument (bad request, no place for a time, a map that is not 2:1) or
+// `place` is used when the time needs one and the request gives no latitude/longitude
+// (the DEM's centre). Without a time or angles the sun is gdaldem's (315°, 45°). Throws
+// LightingError (bad request, no place for a time, a map that is not 2:1) or
 // std::runtime_error (unreadable map), one line each.
 ResolvedLighting resolve_lighting(const LightingRequest& request, const std::optional<sky::Observer>& place);
 

@@ -64,7 +64,8 @@ std::string product_names() {
 void validate_subsample(const ProductOptions& options) {
   const int s = options.subsample;
   if (s != 1 && s != 2 && s != 4) throw std::invalid_argument("subsample must be 1, 2 or 4");
-  if (s != 1 && options.exact) throw std::invalid_argument("subsample needs the multi-resolution march (not --exact)");
+  if (s != 1 && options.exact)
+    throw std::invalid_argument("subsample needs the multi-resolution march (not the exact march)");
 }
 
 bool uses_lighting(Product product, const ProductOptions& options) {

@@ -341,7 +341,7 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
           throw DemError("'" + name + "' holds an implausible height " + fmt(m) + " m at pixel (" +
                          std::to_string(win.x0 + i) + ", " + std::to_string(win.y0 + j0 + r) +
                          "), outside " + fmt(options.min_plausible_m) + "…" + fmt(options.max_plausible_m) +
-                         " m; is its nodata value set (--nodata) or its vertical unit wrong?");
+                         " m; is its nodata value set or its vertical unit wrong?");
         const double z = m * options.z_factor;
         lo = std::min(lo, z);
         hi = std::max(hi, z);

@@ -25,16 +25,24 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "terrain/height_field.h"
 
 namespace skylit::terrain {
 
-// Every reader failure; what() is one line naming the file and the problem.
+// Every reader failure; what() is one line naming the file and the problem. option():
+// the DemReadOptions member that would fix it ("scale"), or empty; library messages
+// name no command-line flag, a front end adds its own for option().
 class DemError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  DemError(const std::string& what, std::string option) : std::runtime_error(what), option_(std::move(option)) {}
+  const std::string& option() const { return option_; }
+
+ private:
+  std::string option_;
 };
 
 enum class VoidFill {

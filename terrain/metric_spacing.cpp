@@ -72,7 +72,7 @@ MetricSpacing crs_spacing(const GeoReference& georef, int rows, std::vector<std:
   const char* unit_name = nullptr;
   const double m_per_unit = srs.GetLinearUnits(&unit_name);
   if (!(m_per_unit > 0 && std::isfinite(m_per_unit)))
-    throw DemError("the DEM's CRS has no usable linear unit; pass -s/--scale");
+    throw DemError("the DEM's CRS has no usable linear unit; give its scale (metres per map unit)", "scale");
   if (!srs.IsProjected())
     warnings.push_back(std::string("the DEM's CRS is neither projected nor geographic; using its linear unit '") +
                        (unit_name ? unit_name : "?") + "'");
@@ -113,8 +113,9 @@ MetricSpacing metric_spacing(const GeoReference& georef, int rows, const DemRead
   }
   if (unknown)
     throw DemError("the DEM has no " + missing +
-                   ", so its pixel size in metres is unknown; pass -s/--scale (metres per map "
-                   "unit, e.g. -s 30 for a 30 m grid stored with unit pixels)");
+                       ", so its pixel size in metres is unknown; give its scale (metres per map unit, "
+                       "e.g. 30 for a 30 m grid stored with unit pixels)",
+                   "scale");
   out = crs_spacing(georef, rows, warnings);
   if (xs) out.dx_per_row.assign(rows, px * *xs);
   if (ys) out.dy = py * *ys;

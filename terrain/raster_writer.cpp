@@ -35,8 +35,8 @@ std::string lower_name(std::string s) {
   return s;
 }
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw RasterWriteError("cannot write '" + path + "': " + what);
+[[noreturn]] void fail(const std::string& path, const std::string& what, std::string option = {}) {
+  throw RasterWriteError("cannot write '" + path + "': " + what, std::move(option));
 }
 
 class CslList {  // owns a GDAL string list
@@ -100,7 +100,7 @@ void check_target(const Request& r) {
     fail(r.path, "output directory '" + dir.string() + "' is not writable");
   if (fs::is_directory(target, ec)) fail(r.path, "the output path is a directory");
   if (!r.options.overwrite && fs::exists(target, ec))
-    fail(r.path, "the file exists (pass --overwrite to replace it)");
+    fail(r.path, "the file exists", "overwrite");
 }
 
 void check_request(const Request& r) {

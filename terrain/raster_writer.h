@@ -11,16 +11,25 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "terrain/height_field.h"
 
 namespace skylit::terrain {
 
-// Every writer failure; what() is one line naming the file and the problem.
+// Every writer failure; what() is one line naming the file and the problem. option():
+// the RasterWriteOptions member that would fix it ("overwrite"), or empty; library
+// messages name no command-line flag, a front end adds its own for option().
 class RasterWriteError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  RasterWriteError(const std::string& what, std::string option)
+      : std::runtime_error(what), option_(std::move(option)) {}
+  const std::string& option() const { return option_; }
+
+ private:
+  std::string option_;
 };
 
 enum class SampleLayout {

@@ -58,8 +58,8 @@ TEST(CliLighting, BadLightingFailsCleanlyBeforeAnyWork) {
   const std::string out = wall + " -o " + dir.file("out.tif") + " -p irradiance --azimuths 4";
   expect_clean_shade_failure(dir, out + " --time yesterday", "invalid time");
   expect_clean_shade_failure(dir, out + " --time 2026-06-21T09:30:00", "zone");
-  expect_clean_shade_failure(dir, out + " --time 2026-06-21T09:30:00Z --lat 95 --lon 0", "--lat 95");
-  expect_clean_shade_failure(dir, out + " --sky hosek", "unknown --sky 'hosek'");
+  expect_clean_shade_failure(dir, out + " --time 2026-06-21T09:30:00Z --lat 95 --lon 0", "--lat: latitude 95");
+  expect_clean_shade_failure(dir, out + " --sky hosek", "--sky: unknown sky 'hosek'");
   expect_clean_shade_failure(dir, out + " --sky cie:17", "1..16");
   expect_clean_shade_failure(dir, out + " --sky cie:0", "1..16");
   expect_clean_shade_failure(dir, out + " --turbidity 40", "--turbidity");
@@ -77,7 +77,7 @@ TEST(CliLighting, BadLightingFailsCleanlyBeforeAnyWork) {
   no_crs.set_geotransform = false;
   const std::string nocrs = make_raster(dir.file("nocrs.tif"), no_crs);
   expect_clean_shade_failure(dir, nocrs + " -s 10 -o " + dir.file("o.tif") + " -p shadow --time 2026-06-21T09:30:00Z",
-                       "--lat and --lon");
+                       "--lat, --lon: a time needs the DEM's location");
   // The GPU has no exact sun march: an explicit --backend gpu refuses, in one line.
   expect_clean_shade_failure(dir, out + " --exact --backend gpu", "--backend gpu");
 }

@@ -90,7 +90,7 @@ TEST(Subsample, Validation) {
     compute_product(f, Product::Svf, o);
     ADD_FAILURE() << "exact with subsample 2 accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "subsample needs the multi-resolution march (not --exact)");
+    EXPECT_STREQ(e.what(), "subsample needs the multi-resolution march (not the exact march)");
   }
 }
 

@@ -262,7 +262,11 @@ int run_shade(const ShadeArgs& a) {
   request.sun = !a.no_sun;
   if (times) request.time.clear();  // each frame sets its own
   if (lit) shading::validate(request);  // before reading the DEM
-  shading::validate_subsample(a.options);  // --subsample with --exact
+  try {
+    shading::validate_subsample(a.options);  // --subsample with --exact
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--subsample " + std::to_string(a.options.subsample) + ": " + e.what());
+  }
 
   const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);

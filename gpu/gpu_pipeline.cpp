@@ -321,7 +321,7 @@ bool same_baked_lighting(Product product, const shading::ProductOptions& a, cons
   if (lit != shading::uses_lighting(product, b)) return false;
   if (!lit) return true;
   if (!a.lighting || !b.lighting) return a.lighting.has_value() == b.lighting.has_value();
-  return sun_lit(product, a) == sun_lit(product, b) && (product != Product::Shaded || a.lighting->colour == b.lighting->colour) &&
+  return sun_lit(product, a) == sun_lit(product, b) && (!shading::traits(product).rgb_when_colour || a.lighting->colour == b.lighting->colour) &&
          (a.lighting->sky != nullptr) == (b.lighting->sky != nullptr);
 }
 
@@ -642,7 +642,7 @@ const Buffer& GpuProductPipeline::compute_on_gpu(const terrain::HeightField& fie
 }
 
 double GpuProductPipeline::display_scale() const {
-  if (mProduct != Product::Shaded) return 1.0;
+  if (!shading::traits(mProduct).eight_bit) return 1.0;
   if (shading::uses_lighting(mProduct, mOptions)) return mImpl->display_per_irradiance;
   return mOptions.shaded.albedo * mOptions.shaded.exposure;
 }

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -20,32 +19,33 @@
 namespace skylit::shading {
 
 bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options) {
-  return options.march.method == HorizonMethod::Sweep && !options.exact && options.subsample == 1 &&
-         sweep_applicable(field, options.march);
+  return options.march.method == horizon::HorizonMethod::Sweep && !options.exact && options.subsample == 1 &&
+         horizon::sweep_applicable(field, options.march);
 }
 
 HorizonOracle::HorizonOracle(const terrain::HeightField& field, const ProductOptions& options) : field_(field) {
   validate(options.march);
   if (uses_sweep(field, options)) {  // no pyramid: HorizonSource sweeps; the floor is the half texel's
-    exact_ = ExactMarch{0.5, options.march.max_distance_m, options.march.curvature};
+    exact_ = horizon::ExactMarch{0.5, options.march.max_distance_m, options.march.curvature};
     return;
   }
   if (!options.exact) {
-    marcher_ = std::make_unique<HorizonMarcher>(field, options.march);
+    marcher_ = std::make_unique<horizon::HorizonMarcher>(field, options.march);
     return;
   }
   if (!(options.exact_options.step_texels > 0.0)) throw std::invalid_argument("exact: step must be > 0");
-  exact_ = ExactMarch{options.exact_options.step_texels, options.march.max_distance_m, options.march.curvature};
+  exact_ = horizon::ExactMarch{options.exact_options.step_texels, options.march.max_distance_m,
+                               options.march.curvature};
 }
 
-double HorizonOracle::max_elevation(int i, int j, Heading u) const {
-  return marcher_ ? marcher_->max_elevation(i, j, u) : exact_max_elevation(field_, i, j, u, exact_);
+double HorizonOracle::max_elevation(int i, int j, horizon::Heading u) const {
+  return marcher_ ? marcher_->max_elevation(i, j, u) : horizon::exact_max_elevation(field_, i, j, u, exact_);
 }
 
-double HorizonOracle::ground_floor(int j, Heading u) const {
-  const EarthCurvature& c = marcher_ ? marcher_->options().curvature : exact_.curvature;
+double HorizonOracle::ground_floor(int j, horizon::Heading u) const {
+  const horizon::EarthCurvature& c = marcher_ ? marcher_->options().curvature : exact_.curvature;
   if (!c.enabled) return 0.0;
-  const double t1 = marcher_ ? marcher_->distance(0) : exact_step_length(field_, j, u, exact_.step_texels);
+  const double t1 = marcher_ ? marcher_->distance(0) : horizon::exact_step_length(field_, j, u, exact_.step_texels);
   return -std::atan(t1 / (2.0 * c.effective_radius()));
 }
 
@@ -65,10 +65,10 @@ SunShadowOptions sun_shadow_options(const ProductOptions& o) {
   s.march.max_distance_m = o.march.max_distance_m;
   if (o.exact) {
     s.horizon = SunHorizon::Exact;
-    s.exact = ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
-  } else if (o.march.method == HorizonMethod::Sweep) {  // the sun's own sweep knobs; Marched where it cannot
+    s.exact = horizon::ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};
+  } else if (o.march.method == horizon::HorizonMethod::Sweep) {  // the sun's own sweep knobs; Marched where it cannot
     s.horizon = SunHorizon::Swept;
-    s.march.method = HorizonMethod::Sweep;
+    s.march.method = horizon::HorizonMethod::Sweep;
   }
   return s;
 }
@@ -84,12 +84,6 @@ double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lightin
 
 Radiance uniform_sky_radiance() {
   return [](const glm::dvec3& d) { return d.z > 0.0 ? 1.0 : 0.0; };
-}
-
-std::string horizon_band_name(int k, int azimuths) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "horizon_az%05.1f", 360.0 * k / azimuths);
-  return buf;
 }
 
 }  // namespace skylit::shading

@@ -26,14 +26,14 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr double kSunShare = 0.1;
 
 // Headings of the W product bands (geographic) or of the wedge samples (math frame).
-std::vector<Heading> geographic_headings(int w) {
-  std::vector<Heading> h(w);
-  for (int k = 0; k < w; ++k) h[k] = heading_from_geographic(band_azimuth(k, w));
+std::vector<horizon::Heading> geographic_headings(int w) {
+  std::vector<horizon::Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = horizon::heading_from_geographic(horizon::band_azimuth(k, w));
   return h;
 }
-std::vector<Heading> math_headings(int w) {
-  std::vector<Heading> h(w);
-  for (int k = 0; k < w; ++k) h[k] = heading_from_math(kTwoPi * k / w);
+std::vector<horizon::Heading> math_headings(int w) {
+  std::vector<horizon::Heading> h(w);
+  for (int k = 0; k < w; ++k) h[k] = horizon::heading_from_math(horizon::kTwoPi * k / w);
   return h;
 }
 
@@ -91,7 +91,7 @@ class LitShading {
 class HorizonSource {
  public:
   HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, const ProductOptions& options,
-                const std::vector<Heading>& headings)
+                const std::vector<horizon::Heading>& headings)
       : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, options.subsample},
         rows_{field.height, options.subsample}, march_(options.march), sweep_(uses_sweep(field, options)) {}
 
@@ -100,7 +100,7 @@ class HorizonSource {
     if (!sweep_) return;
     far_.resize(headings_.size());
     parallel_rows(static_cast<int>(headings_.size()), threads,
-                  [&](int k) { far_[k] = sweep_far_slopes(field_, headings_[k], march_); }, progress);
+                  [&](int k) { far_[k] = horizon::sweep_far_slopes(field_, headings_[k], march_); }, progress);
   }
 
   bool subsampled() const { return cols_.step > 1; }
@@ -131,14 +131,14 @@ class HorizonSource {
     if (sweep_) {
       const std::size_t texel = static_cast<std::size_t>(j) * field_.width + i;
       for (std::size_t k = 0; k < headings_.size(); ++k)
-        sigma[k] = sweep_max_elevation(field_, i, j, headings_[k], far_[k][texel], march_);
+        sigma[k] = horizon::sweep_max_elevation(field_, i, j, headings_[k], far_[k][texel], march_);
       return;
     }
     if (!subsampled()) {
       for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = oracle_.max_elevation(i, j, headings_[k]);
       return;
     }
-    const SubsampleAxis::Bracket x = cols_.bracket(i), y = rows_.bracket(j);
+    const horizon::SubsampleAxis::Bracket x = cols_.bracket(i), y = rows_.bracket(j);
     for (std::size_t k = 0; k < headings_.size(); ++k) {
       auto along_row = [&](int cj) {
         const double v0 = coarse_[index(x.c0, cj, k)];
@@ -158,10 +158,10 @@ class HorizonSource {
 
   const HorizonOracle& oracle_;
   const terrain::HeightField& field_;
-  const std::vector<Heading>& headings_;
-  SubsampleAxis cols_, rows_;
+  const std::vector<horizon::Heading>& headings_;
+  horizon::SubsampleAxis cols_, rows_;
   std::vector<double> coarse_;  // [(cj·count_x + ci)·W + k]
-  const MarchOptions& march_;
+  const horizon::MarchOptions& march_;
   bool sweep_;
   std::vector<std::vector<std::uint16_t>> far_;  // sweep: codes per heading, [j·width + i]
 };
@@ -284,7 +284,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   }
   timings_.horizons_reused = reuse;
 
-  const std::vector<Heading> headings =
+  const std::vector<horizon::Heading> headings =
       kind.band_per_azimuth ? geographic_headings(w_march)
       : needs_visibility    ? math_headings(w_sky)
                             : geographic_headings(w_sky);
@@ -309,7 +309,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
     }
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;  // stays NaN
-      const glm::dvec3 n = horn_normal(field, i, j);
+      const glm::dvec3 n = horizon::horn_normal(field, i, j);
       if (!reuse) horizons.horizons(i, j, sigma);
       switch (product) {
         case Product::Horizon:
@@ -327,7 +327,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
           } else {
             // Visibility horizon: floored at the tangent plane (math-notes §10.14).
             for (std::size_t k = 0; k < sigma.size(); ++k)
-              sigma[k] = std::clamp(std::max(sigma[k], tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
+              sigma[k] = std::clamp(std::max(sigma[k], horizon::tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
                                     std::numbers::pi / 2);
             if (log_route)
               sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);

@@ -30,7 +30,7 @@ ProductOptions frame_options(const ProductOptions& options, const FrameInputs& i
 }
 
 std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inputs, const terrain::HeightField& field) {
-  if (product != Product::Shadow || !inputs.lighting || sun_above_horizon(inputs.lighting->sun)) return std::nullopt;
+  if (!traits(product).sun_only || !inputs.lighting || sun_above_horizon(inputs.lighting->sun)) return std::nullopt;
   ProductBands out{field.width, field.height, 1, std::vector<float>(field.size(), 0.0f),
                    {std::string(product_name(product))}};
   for (std::size_t t = 0; t < field.size(); ++t)
@@ -39,7 +39,7 @@ std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inp
 }
 
 bool same_horizon_options(const ProductOptions& a, const ProductOptions& b) {
-  const MarchOptions &m = a.march, &n = b.march;
+  const horizon::MarchOptions &m = a.march, &n = b.march;
   return m.azimuths == n.azimuths && m.k_v == n.k_v && m.levels == n.levels && m.level_offset == n.level_offset &&
          m.max_distance_m == n.max_distance_m && m.smooth_max == n.smooth_max && m.use_pyramid == n.use_pyramid &&
          m.level_interpolation == n.level_interpolation && m.curvature.enabled == n.curvature.enabled &&

@@ -104,9 +104,7 @@ bool same_horizon_options(const ProductOptions& a, const ProductOptions& b);
 // skyview), for the field revision and options they were computed for.
 class FrameIndependentCache {
  public:
-  static bool applies(Product product) {
-    return product == Product::Horizon || product == Product::Svf || product == Product::Skyview;
-  }
+  static bool applies(Product product) { return !traits(product).lit; }
   const ProductBands* find(Product product, const terrain::HeightField& field, const ProductOptions& options) const;
   void store(Product product, const terrain::HeightField& field, const ProductOptions& options, const ProductBands& bands);
   void clear() { entries_.clear(); }

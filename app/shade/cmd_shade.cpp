@@ -222,7 +222,7 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
   if (summed) {
     job.outputs.files.push_back(std::move(summed_out));
   } else {
-    const std::size_t bands = product == shading::Product::Shaded ? 3 : 1;  // at most: colour
+    const std::size_t bands = shading::traits(product).rgb_when_colour ? 3 : 1;  // at most: colour
     job.outputs = resolve_frame_outputs(a.output, a.format, product, a.creation_options, a.overwrite,
                                         static_cast<int>(job.instants.size()), field.size() * bands * sizeof(float),
                                         kMaxSeriesFileBytes);

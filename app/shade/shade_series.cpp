@@ -86,7 +86,7 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
             << renderer.description() << "\n";
   if (night > 0)
     std::cerr << "skylit: note: the sun is below the horizon at " << night << " of " << n << " times ("
-              << (job.product == shading::Product::Shadow ? "shadow 0 there" : "sky light only there") << ")\n";
+              << (shading::traits(job.product).sun_only ? "shadow 0 there" : "sky light only there") << ")\n";
   if (job.outputs.per_frame)
     std::cerr << "skylit: wrote " << n << " files, " << job.outputs.files.front().path << " … "
               << job.outputs.files.back().path << "\n";

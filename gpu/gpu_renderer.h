@@ -61,8 +61,8 @@ class GpuRenderer final : public shading::Renderer {
   GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options);
   void finish_frame(std::chrono::steady_clock::time_point start);
 
-  std::unique_ptr<HeadlessContext> context_;  // declared first: destroyed last
-  double context_ms_ = 0.0;
+  double context_ms_ = 0.0;                    // set by the context's construction, so declared before it
+  std::unique_ptr<HeadlessContext> context_;  // destroyed after every GL object below
   bool context_reported_ = false;
   const terrain::HeightField* field_ = nullptr;
   shading::ProductOptions options_;

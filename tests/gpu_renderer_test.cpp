@@ -66,10 +66,13 @@ TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
   r.set_options(o);
   r.expect_frames(3);
   const Lighting suns[] = {lighting_at(90, 10), lighting_at(180, 50), lighting_at(270, 25)};
+  bool first = true;  // the renderer's first frame reports its context's creation
   for (Product p : {Product::Irradiance, Product::Shaded, Product::Shadow}) {
     for (int k = 0; k < 3; ++k) {
       const ProductBands got = r.frame(p, {suns[k], {}, std::nullopt});
       const shading::FrameTimings t = r.last_timings();
+      EXPECT_EQ(t.context_ms > 0.0, first) << shading::product_name(p) << " frame " << k;
+      first = false;
       if (p != Product::Shadow) {
         EXPECT_EQ(t.horizons_reused, k > 0) << shading::product_name(p) << " frame " << k;
       }

@@ -56,27 +56,20 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
   ShadingSetup out;
   // The skies, as the reference's SkyShading / LitShading build them (same symmetry
   // flag too: the GPU's table must be the reference's, texel for texel).
-  std::vector<shading::Radiance> skies;
-  bool z_symmetric = true;  // the uniform sky
+  std::vector<shading::SkyInput> skies;
   if (lit) {
     const shading::Lighting& l = *options.lighting;
     const bool rgb = shading::rgb_bands(product, options);
     out.channels = rgb ? 3 : 1;
-    z_symmetric = l.sky && l.sky->azimuthally_symmetric();
-    for (int c = 0; c < out.channels; ++c) {
-      out.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
-      if (l.sky) skies.push_back(shading::channel_radiance(l.sky, rgb, c));
-    }
+    for (int c = 0; c < out.channels; ++c) out.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+    skies = shading::channel_sky_inputs(l, rgb, mode, s.sh_order);
   } else {
-    skies.push_back(shading::uniform_sky_radiance());
+    skies.push_back(shading::sky_input(mode, s.sh_order, shading::uniform_sky_radiance(), true));
   }
-  shading::ShadingSettings settings;
-  settings.mode = mode;
-  settings.order = s.sh_order;
+  const shading::ShadingSettings settings = shading::sky_shading_settings(mode, s.sh_order);
   std::vector<std::unique_ptr<shading::Shader>> shaders;
   std::vector<sh::Vec> sky_sh;
-  for (const shading::Radiance& r : skies) {
-    shading::SkyInput in = shading::sky_input(mode, s.sh_order, r, z_symmetric);
+  for (const shading::SkyInput& in : skies) {
     if (mode != ShadingMode::SkyBrdfTable) sky_sh.push_back(in.sh);
     shaders.push_back(std::make_unique<shading::Shader>(settings, in));
   }

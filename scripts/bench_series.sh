@@ -4,7 +4,8 @@
 # commit in a worktree) and gdaldem; 24-frame `shadow` and `shaded` series against one
 # frame; a day's insolation against GRASS r.sun (mode 2) and SAGA's Potential Incoming
 # Solar Radiation on the same DEM when they are installed (apt-get install grass-core
-# saga). Usage: OLD=/path/to/old/skylit scripts/bench_series.sh [SIZE] [RUNS] after a
+# saga). Their clear-sky models and defaults are their own: the daily means printed
+# beside the times say whether the runs are comparable. Usage: OLD=/path/to/old/skylit scripts/bench_series.sh [SIZE] [RUNS] after a
 # release build. Prints one line per command: best and median wall time over RUNS.
 set -euo pipefail
 size=${1:-1024}
@@ -16,7 +17,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$skylit" scene -o "$tmp/dem.tif" --size "$size" -q
 day=2026-06-21
-series="${day}T04:00Z/${day}T15:30Z/PT30M"  # 24 frames (UTM 32N: 05:40–17:10 local mean time)
+series="${day}T04:00Z/${day}T15:30Z/PT30M"  # 24 frames (the scene at 7.9° E: 04:32–16:02 local mean time)
 
 time_runs() {  # label, command...: best and median wall seconds over $n runs (default $runs)
   local label=$1; shift
@@ -24,7 +25,7 @@ time_runs() {  # label, command...: best and median wall seconds over $n runs (d
   for ((r = 0; r < ${n:-$runs}; ++r)); do
     local t0 t1
     t0=$(date +%s.%N)
-    "$@" >/dev/null 2>&1
+    "$@" >/dev/null 2>&1 || { echo "$label: FAILED"; return 0; }
     t1=$(date +%s.%N)
     times+=("$(echo "$t1 - $t0" | bc)")
   done
@@ -53,6 +54,7 @@ echo "frame times of the series (renderer frames, --timings):"
 "$skylit" shade "$tmp/dem.tif" -o "$tmp/f_%02d.png" -p shaded --time "$series" -q --overwrite --timings 2>&1 | sed 's/^/  shaded: /'
 time_runs "shade ${size}² -p insolation --time $day (sunrise to sunset, 5 min)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/ins.tif" -p insolation --time "$day" -q --overwrite
+gdalinfo -stats "$tmp/ins.tif" 2>/dev/null | grep -m1 STATISTICS_MEAN | sed "s/^ */  skylit daily mean (Wh\/m2): /"
 if command -v grass >/dev/null; then
   grass -c "$tmp/dem.tif" -e "$tmp/grassdb/loc" >/dev/null 2>&1
   grass "$tmp/grassdb/loc/PERMANENT" --exec r.in.gdal input="$tmp/dem.tif" output=dem --q >/dev/null 2>&1
@@ -63,6 +65,7 @@ if command -v grass >/dev/null; then
   n=$ext_runs time_runs "GRASS r.sun mode 2, day 172, step 0.0833 h (5 min), 2 threads" \
     grass "$tmp/grassdb/loc/PERMANENT" --exec r.sun elevation=dem aspect=aspect slope=slope day=172 step=0.0833333 \
     glob_rad=glob5 nprocs=2 --q --overwrite
+  grass "$tmp/grassdb/loc/PERMANENT" --exec r.univar -g glob5 2>/dev/null | grep "^mean=" | sed "s/^/  r.sun daily (Wh\/m2): /"
 fi
 if command -v saga_cmd >/dev/null; then
   saga_cmd io_gdal 0 -FILES "$tmp/dem.tif" -GRIDS "$tmp/dem_saga" >/dev/null 2>&1 || true
@@ -70,4 +73,5 @@ if command -v saga_cmd >/dev/null; then
     saga_cmd ta_lighting 2 -GRD_DEM "$tmp/dem_saga.sgrd" -GRD_TOTAL "$tmp/pisr.sgrd" -PERIOD 1 -DAY "$day" -HOUR_STEP 0.25
   n=$ext_runs time_runs "SAGA ta_lighting 2 (PISR), one day, step 0.0833 h (5 min)" \
     saga_cmd ta_lighting 2 -GRD_DEM "$tmp/dem_saga.sgrd" -GRD_TOTAL "$tmp/pisr5.sgrd" -PERIOD 1 -DAY "$day" -HOUR_STEP 0.0833333
+  gdalinfo -stats "$tmp/pisr5.sdat" 2>/dev/null | grep -m1 STATISTICS_MEAN | sed "s/^ */  SAGA daily mean (its default units, kWh\/m2): /"
 fi

@@ -49,6 +49,28 @@ double HorizonOracle::ground_floor(int j, horizon::Heading u) const {
   return -std::atan(t1 / (2.0 * c.effective_radius()));
 }
 
+ShadingSettings sky_shading_settings(ShadingMode mode, int order) {
+  ShadingSettings settings;
+  settings.mode = mode;
+  settings.order = order;
+  return settings;
+}
+
+std::vector<SkyInput> channel_sky_inputs(const Lighting& l, bool rgb, ShadingMode mode, int order) {
+  std::vector<SkyInput> inputs;
+  if (!l.sky) return inputs;
+  const bool z_symmetric = l.sky->azimuthally_symmetric();
+  for (int c = 0; c < (rgb ? 3 : 1); ++c) inputs.push_back(sky_input(mode, order, channel_radiance(l.sky, rgb, c), z_symmetric));
+  if (rgb && mode == ShadingMode::SkyBrdfTable) {
+    const ShadingSettings s = sky_shading_settings(mode, order);
+    const auto tables = SkyBrdfTable::rgb(order, s.brdf.lobe_exponent(),
+                                          [sky = l.sky](const glm::dvec3& d) { return sky->radiance(d); },
+                                          table_grid_for(s), s.table_quadrature, z_symmetric);
+    for (int c = 0; c < 3; ++c) inputs[c].table = tables[c];
+  }
+  return inputs;
+}
+
 SkyInput sky_input(ShadingMode mode, int order, Radiance radiance, bool z_symmetric) {
   SkyInput in;
   in.z_symmetric = z_symmetric;

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace skylit::shading {
 
@@ -56,5 +57,11 @@ double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lightin
 // z_symmetric: the radiance is symmetric about z (SkyInput); uniform_sky_radiance()
 // is, a channel_radiance(sky, …) is if sky->azimuthally_symmetric().
 SkyInput sky_input(ShadingMode mode, int order, Radiance radiance, bool z_symmetric);
+// The Lambert shading settings of the sky light in `mode` at SH order `order`.
+ShadingSettings sky_shading_settings(ShadingMode mode, int order);
+// The sky inputs of a lighting's output channels (R, G, B when rgb, else the broadband
+// luminance; none without a sky), as every backend shades them: in table mode a colour
+// sky's three tables are built in one pass (SkyBrdfTable::rgb, equal to three).
+std::vector<SkyInput> channel_sky_inputs(const Lighting& lighting, bool rgb, ShadingMode mode, int order);
 
 }  // namespace skylit::shading

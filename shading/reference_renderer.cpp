@@ -41,12 +41,8 @@ std::vector<horizon::Heading> math_headings(int w) {
 // chosen mode; LogBrdf works from the log-visibility, the others from V.
 class SkyShading {
  public:
-  SkyShading(ShadingMode mode, int order, Radiance radiance, bool z_symmetric) {
-    ShadingSettings settings;
-    settings.mode = mode;
-    settings.order = order;
-    shader_ = std::make_unique<Shader>(settings, sky_input(mode, order, std::move(radiance), z_symmetric));
-  }
+  SkyShading(ShadingMode mode, int order, const SkyInput& sky)
+      : shader_(std::make_unique<Shader>(sky_shading_settings(mode, order), sky)) {}
   bool needs_log() const { return shader_->settings().mode == ShadingMode::LogBrdf; }
   double radiance(std::span<const double> vis, std::span<const double> log_vis, const glm::dvec3& n) const {
     return needs_log() ? shader_->shade_log(log_vis, n, n) : shader_->shade(vis, n, n);
@@ -61,13 +57,9 @@ class SkyShading {
 class LitShading {
  public:
   LitShading(const Lighting& l, bool rgb, ShadingMode mode, int order) : sun_(l.sun.direction) {
-    const int channels = rgb ? 3 : 1;
-    for (int c = 0; c < channels; ++c) {
-      dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
-      if (!l.sky) continue;
-      sky_.push_back(std::make_unique<SkyShading>(mode, order, channel_radiance(l.sky, rgb, c),
-                                                  l.sky->azimuthally_symmetric()));
-    }
+    for (int c = 0; c < (rgb ? 3 : 1); ++c) dni_.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+    for (const SkyInput& in : channel_sky_inputs(l, rgb, mode, order))
+      sky_.push_back(std::make_unique<SkyShading>(mode, order, in));
   }
   int channels() const { return static_cast<int>(dni_.size()); }
   // Irradiance of channel c (W/m²): π·(sky shading) (= ∫ L·V·max(n·ω, 0) dω) plus the sun.
@@ -267,7 +259,8 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
     if (lit)
       lighting = std::make_unique<LitShading>(*options.lighting, rgb, s.mode, s.sh_order);
     else
-      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order, uniform_sky_radiance(), true);
+      uniform_sky = std::make_unique<SkyShading>(s.mode, s.sh_order,
+                                                 sky_input(s.mode, s.sh_order, uniform_sky_radiance(), true));
   }
   // Tone map of the lit `shaded` (lighting.h): E → linear display value.
   const double display_per_irradiance =

@@ -94,8 +94,14 @@ Shader::Shader(const ShadingSettings& settings, const SkyInput& sky) : settings_
 
 void Shader::set_sky(const SkyInput& sky) {
   if (settings_.mode == ShadingMode::SkyBrdfTable) {
+    if (sky.table) {
+      if (sky.table->order() != settings_.order || sky.table->lobe_exponent() != settings_.brdf.lobe_exponent())
+        throw std::invalid_argument("Shader: the sky's table was built for other settings");
+      table_ = sky.table;
+      return;
+    }
     if (!sky.radiance) throw std::invalid_argument("Shader: table mode needs the sky radiance function");
-    table_ = std::make_unique<SkyBrdfTable>(settings_.order, settings_.brdf.lobe_exponent(), sky.radiance,
+    table_ = std::make_shared<SkyBrdfTable>(settings_.order, settings_.brdf.lobe_exponent(), sky.radiance,
                                             table_grid_for(settings_), settings_.table_quadrature, sky.z_symmetric);
     return;
   }

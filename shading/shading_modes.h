@@ -84,6 +84,9 @@ struct SkyInput {
   sh::Vec sh;                // order-n SH of the radiance: LogBrdf, TripleProduct
   Radiance radiance;         // full-frequency radiance: SkyBrdfTable
   bool z_symmetric = false;  // radiance symmetric about z (SkyBrdfTable's shortcut)
+  // SkyBrdfTable: the table of `radiance` for the Shader's settings, built already (a
+  // colour sky's channels in one pass, SkyBrdfTable::rgb); null: the Shader builds it.
+  std::shared_ptr<const SkyBrdfTable> table = nullptr;
 };
 
 class Shader {
@@ -111,7 +114,7 @@ class Shader {
   ShadingSettings settings_;
   const sh::TripleProduct* gamma_ = nullptr;
   sh::Vec sky_sh_, lobe_zh_, log_lobe_zh_;
-  std::unique_ptr<SkyBrdfTable> table_;
+  std::shared_ptr<const SkyBrdfTable> table_;
 };
 
 }  // namespace skylit::shading

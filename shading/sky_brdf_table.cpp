@@ -7,9 +7,11 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -40,8 +42,14 @@ double test_sky_radiance(const glm::dvec3& d) {
 
 glm::dvec3 AxisGrid::axis(int i, int j) const { return sh::direction(theta(i), phi(j)); }
 
-sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm::dvec3& axis_in,
-                            const LobeQuadrature& q) {
+namespace {
+
+// T(a) of C channels at once, sky(ω) giving all C radiances: channel c is summed term
+// for term as a one-channel projection of channel c would be (the same weights, the
+// same order), while the sky and the basis are evaluated once per node.
+template <std::size_t C, class Sky>
+std::array<sh::Vec, C> project_channels(int order, double r, const Sky& sky, const glm::dvec3& axis_in,
+                                        const LobeQuadrature& q) {
   if (q.azimuths < 1 || q.gauss_nodes < 1) throw std::invalid_argument("sky_lobe_projection: bad quadrature");
   const int nc = sh::num_coeffs(order);
   const glm::dvec3 a = glm::normalize(axis_in);
@@ -49,7 +57,8 @@ sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm:
   frame_about(a, e1, e2);
   const auto unit = sh::gauss_legendre(q.gauss_nodes, 0.0, 1.0);
   const double dphi = 2.0 * sh::kPi / q.azimuths;
-  sh::Vec out(nc, 0.0);
+  std::array<sh::Vec, C> out;
+  for (sh::Vec& v : out) v.assign(nc, 0.0);
   double y[sh::kMaxOrder * sh::kMaxOrder];
   const std::span<double> ys(y, nc);
   for (int k = 0; k < q.azimuths; ++k) {
@@ -73,26 +82,42 @@ sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm:
         const double th = lo + len * unit.nodes[n];
         const double st = std::sin(th), ct = std::cos(th);
         const glm::dvec3 w_dir = st * u + ct * a;
-        const double w = unit.weights[n] * len * st * dphi * lobe_profile(r, ct) * sky(w_dir);
-        if (w == 0.0) continue;
-        sh::eval_basis(order, w_dir, ys);
-        for (int i = 0; i < nc; ++i) out[i] += w * y[i];
+        const double base = unit.weights[n] * len * st * dphi * lobe_profile(r, ct);
+        const std::array<double, C> radiance = sky(w_dir);
+        bool basis = false;
+        for (std::size_t c = 0; c < C; ++c) {
+          const double w = base * radiance[c];
+          if (w == 0.0) continue;
+          if (!basis) sh::eval_basis(order, w_dir, ys);
+          basis = true;
+          for (int i = 0; i < nc; ++i) out[c][i] += w * y[i];
+        }
       }
     }
   }
   return out;
 }
 
-SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisGrid& grid, const LobeQuadrature& q,
-                           bool z_symmetric)
-    : order_(order), lobe_exponent_(r), grid_(grid) {
+}  // namespace
+
+sh::Vec sky_lobe_projection(int order, double r, const Radiance& sky, const glm::dvec3& axis_in,
+                            const LobeQuadrature& q) {
+  const auto one = [&](const glm::dvec3& d) { return std::array<double, 1>{sky(d)}; };
+  return std::move(project_channels<1>(order, r, one, axis_in, q)[0]);
+}
+
+SkyBrdfTable::SkyBrdfTable(int order, double r, const AxisGrid& grid) : order_(order), lobe_exponent_(r), grid_(grid) {
   if (order < sh::kMinOrder || order > sh::kMaxOrder) throw std::invalid_argument("SkyBrdfTable: order");
   if (!(r > 0.0)) throw std::invalid_argument("SkyBrdfTable: lobe exponent must be > 0");
   if (grid.n_theta < 2 || grid.n_phi < 1 || !(grid.theta_max > 0.0) || grid.theta_max > sh::kPi + 1e-12)
     throw std::invalid_argument("SkyBrdfTable: bad axis grid");
-  if (!sky) throw std::invalid_argument("SkyBrdfTable: no sky radiance");
-  const int nc = sh::num_coeffs(order);
   values_.assign(static_cast<std::size_t>(layers()) * grid.n_theta * grid.n_phi * 4, 0.0);
+}
+
+template <std::size_t C, class Project>
+void SkyBrdfTable::fill(const std::array<SkyBrdfTable*, C>& tables, bool z_symmetric, const Project& project) {
+  const AxisGrid& grid = tables[0]->grid_;
+  const int nc = sh::num_coeffs(tables[0]->order_);
   // Rows are independent: workers take them in turn (results do not depend on the split).
   std::atomic<int> next_row{0};
   std::exception_ptr failure;
@@ -103,12 +128,17 @@ SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisG
         // A pole row (θ = 0 or π) is one direction: project once, copy along φ.
         // A z-symmetric sky: T(Rz(φ)·a) = rotate_z(T(a), φ), so project at φ_0 = 0 only.
         const bool pole = grid.theta(i) < 1e-12 || grid.theta(i) > sh::kPi - 1e-12;
-        sh::Vec t, t0;
+        std::array<sh::Vec, C> t, t0;
         for (int j = 0; j < grid.n_phi; ++j) {
-          if (j == 0) t = t0 = sky_lobe_projection(order, r, sky, grid.axis(i, j), q);
-          else if (!pole && z_symmetric) t = sh::rotate_z(t0, grid.phi(j));
-          else if (!pole) t = sky_lobe_projection(order, r, sky, grid.axis(i, j), q);
-          for (int k = 0; k < nc; ++k) values_[texel_index(k / 4, i, j, k % 4)] = t[k];
+          if (j == 0) {
+            t = t0 = project(grid.axis(i, j));
+          } else if (!pole && z_symmetric) {
+            for (std::size_t c = 0; c < C; ++c) t[c] = sh::rotate_z(t0[c], grid.phi(j));
+          } else if (!pole) {
+            t = project(grid.axis(i, j));
+          }
+          for (std::size_t c = 0; c < C; ++c)
+            for (int k = 0; k < nc; ++k) tables[c]->values_[tables[c]->texel_index(k / 4, i, j, k % 4)] = t[c][k];
         }
       }
     } catch (...) {  // a throwing sky: stop all workers, rethrow on this thread
@@ -123,7 +153,30 @@ SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisG
   work();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  texels_.assign(values_.begin(), values_.end());
+  for (SkyBrdfTable* table : tables) table->texels_.assign(table->values_.begin(), table->values_.end());
+}
+
+SkyBrdfTable::SkyBrdfTable(int order, double r, const Radiance& sky, const AxisGrid& grid, const LobeQuadrature& q,
+                           bool z_symmetric)
+    : SkyBrdfTable(order, r, grid) {
+  if (!sky) throw std::invalid_argument("SkyBrdfTable: no sky radiance");
+  const auto one = [&](const glm::dvec3& d) { return std::array<double, 1>{sky(d)}; };
+  fill<1>({this}, z_symmetric, [&](const glm::dvec3& axis) { return project_channels<1>(order, r, one, axis, q); });
+}
+
+std::array<std::shared_ptr<const SkyBrdfTable>, 3> SkyBrdfTable::rgb(int order, double r, const RgbRadiance& sky,
+                                                                   const AxisGrid& grid, const LobeQuadrature& q,
+                                                                   bool z_symmetric) {
+  if (!sky) throw std::invalid_argument("SkyBrdfTable: no sky radiance");
+  std::array<std::shared_ptr<SkyBrdfTable>, 3> tables;
+  for (auto& t : tables) t.reset(new SkyBrdfTable(order, r, grid));
+  const auto three = [&](const glm::dvec3& d) {
+    const glm::dvec3 c = sky(d);
+    return std::array<double, 3>{c.r, c.g, c.b};
+  };
+  fill<3>({tables[0].get(), tables[1].get(), tables[2].get()}, z_symmetric,
+          [&](const glm::dvec3& axis) { return project_channels<3>(order, r, three, axis, q); });
+  return {tables[0], tables[1], tables[2]};
 }
 
 void SkyBrdfTable::lookup(const glm::dvec3& axis_in, std::span<double> out) const {

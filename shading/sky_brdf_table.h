@@ -36,13 +36,17 @@
 
 #include "shading/sh/sh_basis.h"
 
+#include <array>
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace skylit::shading {
 
 using Radiance = std::function<double(const glm::dvec3& dir)>;
+// A colour sky's three channel radiances (R, G, B) of a direction.
+using RgbRadiance = std::function<glm::dvec3(const glm::dvec3& dir)>;
 
 // The fixed smooth test sky of math-notes §7/§8 on the whole sphere:
 // L(ω) = 0.6 + 0.4·z + 0.8·exp(6(ω·ŝ − 1)), ŝ = test_sky_sun() (elevation 35°,
@@ -81,6 +85,13 @@ class SkyBrdfTable {
   // about z; rows are then one projection rotated along φ (≈n_phi× faster).
   SkyBrdfTable(int order, double lobe_exponent, const Radiance& sky, const AxisGrid& grid,
                const LobeQuadrature& quad = {}, bool z_symmetric = false);
+  // The tables of a colour sky's R, G and B, equal to three tables built from its
+  // channels one at a time (the same sums, term for term) at a third of the sky's and
+  // the basis' evaluations.
+  static std::array<std::shared_ptr<const SkyBrdfTable>, 3> rgb(int order, double lobe_exponent,
+                                                                const RgbRadiance& sky, const AxisGrid& grid,
+                                                                const LobeQuadrature& quad = {},
+                                                                bool z_symmetric = false);
 
   int order() const { return order_; }
   double lobe_exponent() const { return lobe_exponent_; }
@@ -100,6 +111,12 @@ class SkyBrdfTable {
   double shade(std::span<const double> visibility, const glm::dvec3& axis) const;
 
  private:
+  SkyBrdfTable(int order, double lobe_exponent, const AxisGrid& grid);  // checked, zero values
+  // Every row of the C tables (same order and grid), project(axis) giving T(axis) of
+  // each, on all hardware threads; then their texels.
+  template <std::size_t C, class Project>
+  static void fill(const std::array<SkyBrdfTable*, C>& tables, bool z_symmetric, const Project& project);
+
   int order_;
   double lobe_exponent_;
   AxisGrid grid_;

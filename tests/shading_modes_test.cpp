@@ -217,6 +217,27 @@ TEST(SkyBrdfTable, NonSymmetricSkyIsProjectedPerAxis) {
   EXPECT_GT(std::max(d.equivariant, d.near_pole), 1e-2 * d.scale);
 }
 
+// A colour sky's three tables in one pass are the three one-channel tables, bit for bit,
+// for a sky that differs per channel and is not symmetric about z (and one that is).
+TEST(SkyBrdfTable, RgbTablesEqualThreeOneChannelTables) {
+  const shading::AxisGrid grid{6, 9, kPi / 2};
+  const auto rgb = [](const glm::dvec3& d) {
+    const double s = shading::test_sky_radiance(d);
+    return glm::dvec3(s, 0.5 * s + 0.2 * d.x, d.z > 0.3 ? s * s : 0.0);
+  };
+  for (bool symmetric : {false, true}) {
+    const auto tables = shading::SkyBrdfTable::rgb(kOrder, 1.0, rgb, grid, kTestQuad, symmetric);
+    for (int c = 0; c < 3; ++c) {
+      const shading::SkyBrdfTable one(kOrder, 1.0, [&](const glm::dvec3& d) { return rgb(d)[c]; }, grid, kTestQuad,
+                                      symmetric);
+      ASSERT_EQ(tables[c]->values().size(), one.values().size());
+      for (std::size_t k = 0; k < one.values().size(); ++k)
+        ASSERT_EQ(tables[c]->values()[k], one.values()[k]) << "channel " << c << " value " << k;
+      EXPECT_TRUE(std::equal(one.texels().begin(), one.texels().end(), tables[c]->texels().begin()));
+    }
+  }
+}
+
 TEST(ShadingModes, UnoccludedTableMatchesBruteForceWithinOnePerMille) {
   // V = 1 is band-limited: only the table's interpolation and quadrature remain.
   const shading::Occluders none;

@@ -99,14 +99,19 @@ void GpuRenderer::finish_frame(std::chrono::steady_clock::time_point start) {
   timings_.frame_ms = ms_since(start);
 }
 
+shading::ProductOptions GpuRenderer::begin_frame(Product product, const shading::FrameInputs& inputs) {
+  if (!field_) throw std::logic_error("GpuRenderer: no field (set_field)");
+  shading::validate(inputs);
+  shading::ProductOptions options = shading::frame_options(options_, inputs);
+  if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
+  timings_ = {};
+  return options;
+}
+
 shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameInputs& inputs,
                                          const shading::ProgressCallback& progress) {
-  if (!field_) throw std::logic_error("GpuRenderer::frame: no field (set_field)");
-  shading::validate(inputs);
-  const shading::ProductOptions options = shading::frame_options(options_, inputs);
-  if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
+  const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
-  timings_ = {};
   shading::ProductBands out;
   const bool independent = shading::FrameIndependentCache::applies(product);
   if (const shading::ProductBands* kept = independent ? outputs_.find(product, *field_, options) : nullptr) {
@@ -126,12 +131,8 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
 
 GpuFrame GpuRenderer::frame_on_gpu(Product product, const shading::FrameInputs& inputs,
                                    const shading::ProgressCallback& progress) {
-  if (!field_) throw std::logic_error("GpuRenderer::frame_on_gpu: no field (set_field)");
-  shading::validate(inputs);
-  const shading::ProductOptions options = shading::frame_options(options_, inputs);
-  if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
+  const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
-  timings_ = {};
   GpuProductPipeline& pipeline = prepare(product, options);
   const double construction_ms = timings_.compile_ms;
   const Buffer& bands = pipeline.compute_on_gpu(*field_, progress, &timings_);

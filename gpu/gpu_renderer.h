@@ -58,6 +58,8 @@ class GpuRenderer final : public shading::Renderer {
   // Each pipeline holds its own copy of the field on the GPU: a few settings at most.
   static constexpr std::size_t kCachedPipelines = 4;
   GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options);
+  // A frame's checks and options; resets the timings.
+  shading::ProductOptions begin_frame(shading::Product product, const shading::FrameInputs& inputs);
   GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options);
   void finish_frame(std::chrono::steady_clock::time_point start);
 

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,15 @@ bool bit_identical(const ProductBands& a, const ProductBands& b) {
          a.data.size() == b.data.size() && std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
+// A renderer on `f` with these options, told to expect `frames` frames.
+std::unique_ptr<GpuRenderer> renderer_on(const terrain::HeightField& f, const ProductOptions& o, int frames) {
+  auto r = std::make_unique<GpuRenderer>();
+  r->set_field(f);
+  r->set_options(o);
+  r->expect_frames(frames);
+  return r;
+}
+
 // A pipeline built for this one frame, on the renderer's context.
 ProductBands fresh(GpuRenderer& r, const terrain::HeightField& f, Product p, ProductOptions o, const Lighting& l) {
   r.context().make_current();
@@ -61,10 +71,8 @@ ProductBands fresh(GpuRenderer& r, const terrain::HeightField& f, Product p, Pro
 TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
   const terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();
-  GpuRenderer r;
-  r.set_field(f);
-  r.set_options(o);
-  r.expect_frames(3);
+  const auto renderer = renderer_on(f, o, 3);
+  GpuRenderer& r = *renderer;
   const Lighting suns[] = {lighting_at(90, 10), lighting_at(180, 50), lighting_at(270, 25)};
   bool first = true;  // the renderer's first frame reports its context's creation
   for (Product p : {Product::Irradiance, Product::Shaded, Product::Shadow}) {
@@ -88,10 +96,8 @@ TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
 TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
   terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();
-  GpuRenderer r;
-  r.set_field(f);
-  r.set_options(o);
-  r.expect_frames(2);
+  const auto renderer = renderer_on(f, o, 2);
+  GpuRenderer& r = *renderer;
   const Lighting sun = lighting_at(135, 30);
   r.frame(Product::Irradiance, {sun, {}, std::nullopt});
   const terrain::PixelRect edit{20, 30, 10, 6};
@@ -108,10 +114,8 @@ TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
 TEST_F(GpuRendererTest, ALightingOfAnotherShapeGetsItsOwnKernels) {
   const terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();
-  GpuRenderer r;
-  r.set_field(f);
-  r.set_options(o);
-  r.expect_frames(3);
+  const auto renderer = renderer_on(f, o, 3);
+  GpuRenderer& r = *renderer;
   const Lighting grey = lighting_at(120, 35), colour = lighting_at(120, 35, "preetham"), night = lighting_at(120, -5);
   ASSERT_TRUE(colour.colour && !grey.colour);
   for (const Lighting& l : {grey, colour, night}) {
@@ -124,10 +128,8 @@ TEST_F(GpuRendererTest, ALightingOfAnotherShapeGetsItsOwnKernels) {
 TEST_F(GpuRendererTest, SeriesFramesMatchTheReference) {
   const terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();
-  GpuRenderer r;
-  r.set_field(f);
-  r.set_options(o);
-  r.expect_frames(2);
+  const auto renderer = renderer_on(f, o, 2);
+  GpuRenderer& r = *renderer;
   const Lighting sun = lighting_at(300, 20);
   r.frame(Product::Irradiance, {lighting_at(60, 40), {}, std::nullopt});
   const ProductBands gpu = r.frame(Product::Irradiance, {sun, {}, std::nullopt});
@@ -175,10 +177,8 @@ TEST_F(GpuRendererTest, AutoTakesTheReferenceWhereTheGpuLacksTheProduct) {
 // `shaded` the linear values its tone map turns into the same codes.
 TEST_F(GpuRendererTest, FramesOnTheGpuHoldWhatFrameReadsBack) {
   const terrain::HeightField f = testing::synthetic_field();
-  GpuRenderer r;
-  r.set_field(f);
-  r.set_options(small_options());
-  r.expect_frames(2);
+  const auto renderer = renderer_on(f, small_options(), 2);
+  GpuRenderer& r = *renderer;
   const Lighting sun = lighting_at(225, 30, "preetham");
   for (Product p : {Product::Skyview, Product::Shadow, Product::Irradiance, Product::Shaded}) {
     const ProductBands host = r.frame(p, {sun, {}, std::nullopt});

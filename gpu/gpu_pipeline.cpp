@@ -580,6 +580,12 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
   if (!shading::uses_lighting(mProduct, mOptions) || !same_baked_lighting(mProduct, mOptions, next))
     throw std::logic_error("GpuProductPipeline::set_lighting: the lighting differs in what the kernels bake in");
   shading::validate(lighting);
+  const shading::Lighting& now = *mOptions.lighting;
+  // The same sky object, sun and tone map: the uniforms and tables are set already (the
+  // first frame's lighting is the constructor's; the bench repeats one).
+  if (lighting.sky == now.sky && lighting.sun.direction == now.sun.direction && lighting.sun.dni == now.sun.dni &&
+      lighting.reference_irradiance == now.reference_irradiance)
+    return;
   mOptions = std::move(next);
   Impl& k = *mImpl;
   if (k.sun[0] || k.sun[1]) {

@@ -112,19 +112,17 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
                                          const shading::ProgressCallback& progress) {
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
-  shading::ProductBands out;
-  const bool independent = shading::FrameIndependentCache::applies(product);
-  if (const shading::ProductBands* kept = independent ? outputs_.find(product, *field_, options) : nullptr) {
-    out = *kept;
-    timings_.horizons_reused = true;
-    if (progress) progress(1.0);
-  } else {
+  const auto render = [&] {
     GpuProductPipeline& pipeline = prepare(product, options);
     const double construction_ms = timings_.compile_ms;
-    out = pipeline.compute(*field_, progress, &timings_);
+    shading::ProductBands bands = pipeline.compute(*field_, progress, &timings_);
     timings_.compile_ms += construction_ms;
-    if (independent && (keep_ || frames_ > 0)) outputs_.store(product, *field_, options, out);
-  }
+    return bands;
+  };
+  shading::ProductBands out = shading::FrameIndependentCache::applies(product)
+                                  ? outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress,
+                                                 timings_.horizons_reused, render)
+                                  : render();
   finish_frame(start);
   return out;
 }

@@ -184,14 +184,11 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
   ProductBands out;
   if (auto night = night_shadow(product, inputs, *field_)) {
     out = std::move(*night);
-  } else if (const ProductBands* kept = FrameIndependentCache::applies(product) ? outputs_.find(product, *field_, options)
-                                                                                : nullptr) {
-    out = *kept;
-    timings_.horizons_reused = true;
-    if (progress) progress(1.0);
+  } else if (FrameIndependentCache::applies(product)) {
+    out = outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress, timings_.horizons_reused,
+                       [&] { return render(product, options, progress); });
   } else {
     out = render(product, options, progress);
-    if (FrameIndependentCache::applies(product) && (keep_ || frames_ > 0)) outputs_.store(product, *field_, options, out);
   }
   ++frames_;
   timings_.frame_ms = ms_since(start);
@@ -212,7 +209,6 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   const bool lit = uses_lighting(product, options);
   if (lit && !options.lighting)
     throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
-  if (lit) validate(*options.lighting);
   const ProductTraits& kind = traits(product);
   const bool rgb = rgb_bands(product, options);
 

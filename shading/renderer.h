@@ -105,11 +105,26 @@ bool same_horizon_options(const ProductOptions& a, const ProductOptions& b);
 class FrameIndependentCache {
  public:
   static bool applies(Product product) { return !traits(product).lit; }
-  const ProductBands* find(Product product, const terrain::HeightField& field, const ProductOptions& options) const;
-  void store(Product product, const terrain::HeightField& field, const ProductOptions& options, const ProductBands& bands);
+  // The bands kept for this product, field revision and options (reused: true), or
+  // render()'s, kept for later frames when `keep`.
+  template <class Render>
+  ProductBands get(Product product, const terrain::HeightField& field, const ProductOptions& options, bool keep,
+                   const ProgressCallback& progress, bool& reused, const Render& render) {
+    if (const ProductBands* kept = find(product, field, options)) {
+      reused = true;
+      if (progress) progress(1.0);
+      return *kept;
+    }
+    ProductBands out = render();
+    if (keep) store(product, field, options, out);
+    return out;
+  }
   void clear() { entries_.clear(); }
 
  private:
+  const ProductBands* find(Product product, const terrain::HeightField& field, const ProductOptions& options) const;
+  void store(Product product, const terrain::HeightField& field, const ProductOptions& options, const ProductBands& bands);
+
   struct Entry {
     Product product;
     std::uint64_t field_id, revision;

@@ -1,7 +1,8 @@
 // Where the frames of a time series go (`shade --time START/END/STEP`, a list, a date):
 // one file per frame when OUTPUT holds a %d-style pattern (frames/shadow_%04d.png,
 // frame numbers from 0 as ffmpeg reads them), else one multi-band GeoTIFF with one band
-// per time (its ISO time as the band description). Every check is made before any work.
+// per time (its ISO time as the band description). Every check is made before the first
+// frame renders (after the DEM is read: a date's frames depend on its place).
 #pragma once
 
 #include "app/shade/shade_output.h"

@@ -21,9 +21,10 @@ case "${1:-}" in
   *) echo "usage: $0 [--upgrade]" >&2; exit 2 ;;
 esac
 
-# "name version" of each listed package that is installed.
+# "name version" of each listed package that is installed (dpkg-query fails when any
+# package is unknown to dpkg, as on a fresh machine: its partial list is still right).
 installed() {
-  dpkg-query -W -f='${Package} ${Version} ${Status}\n' "${PACKAGES[@]}" 2>/dev/null |
+  { dpkg-query -W -f='${Package} ${Version} ${Status}\n' "${PACKAGES[@]}" 2>/dev/null || true; } |
     awk '$NF == "installed" { print $1, $2 }'
 }
 

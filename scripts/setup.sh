@@ -13,6 +13,7 @@ PACKAGES=(
   libglfw3-dev libglm-dev libopenimageio-dev openimageio-tools
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libpugixml-dev libproj-dev proj-data
 )
 upgrade=false
 case "${1:-}" in

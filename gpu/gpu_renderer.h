@@ -37,6 +37,7 @@ class GpuRenderer final : public shading::Renderer {
   void set_options(const shading::ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
+  bool shades_blockers() const override { return false; }
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
   shading::ProductBands frame(shading::Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress = {}) override;

@@ -44,11 +44,13 @@ class AutoRenderer final : public shading::Renderer {
     if (gpu_) gpu_->drop_horizons();
     if (reference_) reference_->drop_horizons();
   }
+  bool shades_blockers() const override { return true; }  // on the reference where the GPU cannot
   std::optional<std::string> lacks(Product, const shading::ProductOptions&) const override { return std::nullopt; }
   shading::ProductBands frame(Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress) override {
     const shading::ProductOptions options = shading::frame_options(options_, inputs);
-    if (gpu_ && !gpu_->lacks(product, options)) {
+    const bool blocked = shading::traits(product).blocked && !inputs.spheres.empty();
+    if (gpu_ && !gpu_->lacks(product, options) && (!blocked || gpu_->shades_blockers())) {
       try {
         auto bands = gpu_->frame(product, inputs, progress);
         last_on_gpu_ = true;
@@ -61,7 +63,9 @@ class AutoRenderer final : public shading::Renderer {
         why_reference_ = "the gpu backend failed";
       }
     } else {
-      why_reference_ = gpu_ ? "the GPU pipeline lacks these options" : "no OpenGL 4.5 context";
+      why_reference_ = !gpu_                              ? "no OpenGL 4.5 context"
+                       : blocked && !gpu_->shades_blockers() ? "the GPU pipeline lacks sphere blockers"
+                                                             : "the GPU pipeline lacks these options";
     }
     last_on_gpu_ = false;
     last_ = &reference();

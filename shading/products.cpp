@@ -16,11 +16,11 @@ namespace {
 constexpr ProductTraits kTraits[] = {
     {.product = Product::Horizon, .name = "horizon", .band_per_azimuth = true},
     {.product = Product::Svf, .name = "svf"},
-    {.product = Product::Skyview, .name = "skyview"},
+    {.product = Product::Skyview, .name = "skyview", .blocked = true},
     {.product = Product::Shaded, .name = "shaded", .rgb_when_colour = true, .needs_visibility = true, .lit = true,
-     .eight_bit = true},
-    {.product = Product::Shadow, .name = "shadow", .lit = true, .needs_sun = true, .sun_only = true},
-    {.product = Product::Irradiance, .name = "irradiance", .needs_visibility = true, .lit = true, .needs_sun = true},
+     .eight_bit = true, .blocked = true},
+    {.product = Product::Shadow, .name = "shadow", .lit = true, .needs_sun = true, .sun_only = true, .blocked = true},
+    {.product = Product::Irradiance, .name = "irradiance", .needs_visibility = true, .lit = true, .needs_sun = true, .blocked = true},
 };
 
 constexpr bool in_enum_order() {

@@ -32,6 +32,7 @@
 // Nodata texels are NaN in every band (the writer maps NaN to nodata).
 #pragma once
 
+#include "shading/blockers/sky_blocking.h"
 #include "shading/horizon/horizon_march.h"
 #include "shading/lighting.h"
 #include "shading/parallel_rows.h"
@@ -63,6 +64,7 @@ struct ProductTraits {
   bool needs_sun = false;         // requires the lighting's sun and sky (shadow, irradiance)
   bool sun_only = false;          // the sun's shadow pass alone, no sky horizons (shadow)
   bool eight_bit = false;         // sRGB code values 1…255 as floats, 0 left for nodata (shaded)
+  bool blocked = false;           // sphere blockers darken it (skyview, shaded, shadow, irradiance)
 };
 
 // Every product's traits, in the enum's order.
@@ -117,6 +119,8 @@ struct ProductOptions {
   // Sky + sun (lighting.h). Required by shadow and irradiance; for shaded it replaces
   // the uniform sky of radiance 1 (the default, kept when empty).
   std::optional<Lighting> lighting;
+  // Sphere blockers (FrameInputs::spheres): ε, culling, composition, HYB.
+  blockers::SkyBlockingOptions blockers;
 };
 
 // Throws std::invalid_argument unless ProductOptions::subsample is 1, 2 or 4, and for

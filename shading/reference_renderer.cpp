@@ -1,5 +1,6 @@
 #include "shading/reference_renderer.h"
 
+#include "shading/blocker_frame.h"
 #include "shading/horizon/azimuth.h"
 #include "shading/horizon/horizon_subsample.h"
 #include "shading/horizon/horizon_sweep.h"
@@ -158,6 +159,16 @@ class HorizonSource {
   std::vector<std::vector<std::uint16_t>> far_;  // sweep: codes per heading, [j·width + i]
 };
 
+// skyview_from_horizon (products.h) for horizons at the math azimuths 2πk/W (the same
+// set as its geographic ones when 4 divides W).
+double skyview_from_math_horizon(std::span<const double> sigma, const std::vector<horizon::Heading>& headings,
+                                 const glm::dvec3& n) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < sigma.size(); ++k)
+    sum += skyview_slice_integral(std::max(sigma[k], 0.0), n, headings[k].east, headings[k].north);
+  return sum * horizon::kTwoPi / static_cast<double>(sigma.size());
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -184,11 +195,11 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
   ProductBands out;
   if (auto night = night_shadow(product, inputs, *field_)) {
     out = std::move(*night);
-  } else if (FrameIndependentCache::applies(product)) {
+  } else if (FrameIndependentCache::applies(product) && !(traits(product).blocked && !inputs.spheres.empty())) {
     out = outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress, timings_.horizons_reused,
-                       [&] { return render(product, options, progress); });
+                       [&] { return render(product, options, {}, progress); });
   } else {
-    out = render(product, options, progress);
+    out = render(product, options, inputs.spheres, progress);
   }
   ++frames_;
   timings_.frame_ms = ms_since(start);
@@ -196,7 +207,7 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
 }
 
 ProductBands ReferenceRenderer::render(Product product, const ProductOptions& options,
-                                       const ProgressCallback& progress) {
+                                       std::span<const blockers::Sphere> spheres, const ProgressCallback& progress) {
   const terrain::HeightField& field = *field_;
   if (field.width < 1 || field.height < 1) throw std::invalid_argument("compute_product: empty height field");
   validate_subsample(options);
@@ -211,6 +222,11 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
     throw std::invalid_argument(std::string(product_name(product)) + " needs a sun: ProductOptions::lighting");
   const ProductTraits& kind = traits(product);
   const bool rgb = rgb_bands(product, options);
+  std::optional<BlockerFrame> blockers;
+  if (kind.blocked && !spheres.empty()) blockers.emplace(field, spheres, options);
+  const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
+  if (blockers && options.exact && log_route)
+    throw std::invalid_argument("the exact truth with sphere blockers needs the table or triple-product shading mode");
 
   ProductBands out;
   out.width = field.width;
@@ -232,6 +248,13 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
                                    [&](double f) {
                                      if (progress) progress(alone ? f : kSunShare * f);
                                    });
+    if (blockers)
+      parallel_rows(field.height, options.threads, [&](int j) {
+        for (int i = 0; i < field.width; ++i) {
+          float& f = shadow[static_cast<std::size_t>(j) * field.width + i];
+          if (f > 0.0f) f = static_cast<float>(f * blockers->sun_left(i, j, s));
+        }
+      });
     if (alone) {
       std::copy(shadow.begin(), shadow.end(), out.data.begin());
       return out;
@@ -244,12 +267,19 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   // Shading set-up: wedge operator, and either the default shading mode (sky × BRDF
   // table, Lambert) under a uniform sky of radiance 1 above the horizontal, or the
   // lighting's sky tables and sun.
+  // With blockers, skyview too needs the SH visibility: its change is shaded by the
+  // uniform sky's table.
   const bool needs_visibility = kind.needs_visibility;
+  const bool sh_visibility = needs_visibility || blockers.has_value();
   const sh::WedgeOperator* wedge = nullptr;
   std::unique_ptr<SkyShading> uniform_sky;
   std::unique_ptr<LitShading> lighting;
-  const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
-  if (needs_visibility) {
+  if (product == Product::Skyview && blockers) {
+    const ShadedOptions& s = options.shaded;
+    wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, s.wedge);
+    uniform_sky = std::make_unique<SkyShading>(ShadingMode::SkyBrdfTable, s.sh_order,
+                                               sky_input(ShadingMode::SkyBrdfTable, s.sh_order, uniform_sky_radiance(), true));
+  } else if (needs_visibility) {
     const ShadedOptions& s = options.shaded;
     wedge = &sh::wedge_operator(s.sh_order, s.nlp_order, w_sky, s.wedge);
     if (lit)
@@ -264,7 +294,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
 
   // The visibility of an earlier frame on this field revision and these horizon options,
   // or (keeping) this frame's, for the frames after it.
-  const bool reuse = needs_visibility && visibility_.field_id == field.id.value() &&
+  const bool reuse = needs_visibility && !blockers && visibility_.field_id == field.id.value() &&
                      visibility_.revision == field.revision && same_horizon_options(visibility_.options, options);
   const bool keep = needs_visibility && !reuse && (keep_ || frames_ > 0);
   if (keep) {
@@ -275,7 +305,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
 
   const std::vector<horizon::Heading> headings =
       kind.band_per_azimuth ? geographic_headings(w_march)
-      : needs_visibility    ? math_headings(w_sky)
+      : sh_visibility       ? math_headings(w_sky)
                             : geographic_headings(w_sky);
 
   // Raw horizons: with sub-sampling, the coarse texels are marched first.
@@ -290,12 +320,34 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
 
   parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
-    std::vector<double> scratch, vis, log_vis;
+    std::vector<double> scratch, vis, log_vis, delta, log_sum, block_scratch;
     if (wedge) {
       scratch.resize(static_cast<std::size_t>(wedge->azimuths()) * wedge->nlp_order());
       vis.resize(wedge->rows());
-      if (log_route) log_vis.resize(wedge->rows());
+      if (log_route || blockers) log_vis.resize(wedge->rows());
+      if (blockers) {
+        delta.resize(wedge->rows());
+        log_sum.resize(wedge->rows());
+        block_scratch.resize(3 * wedge->rows());
+      }
     }
+    // Visibility horizons: floored at the tangent plane (math-notes §10.14).
+    auto floor_horizons = [&](const glm::dvec3& n) {
+      for (std::size_t k = 0; k < sigma.size(); ++k)
+        sigma[k] = std::clamp(std::max(sigma[k], horizon::tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
+                              std::numbers::pi / 2);
+    };
+    // ΔV of the spheres at texel (i, j) from the floored horizons, into `delta` (and the
+    // log sum into log_sum); false where none touches it. Needs vis (and log_vis) of
+    // the terrain.
+    auto block = [&](int i, int j, const glm::dvec3& n) {
+      if (!blockers || !blockers->touches_sky(i, j)) return false;
+      if (options.exact) {
+        blockers->exact_sky_delta(i, j, sigma, delta);
+        return true;
+      }
+      return blockers->sky_delta(i, j, n, sigma, vis, log_vis, delta, log_sum, block_scratch) > 0;
+    };
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;  // stays NaN
       const glm::dvec3 n = horizon::horn_normal(field, i, j);
@@ -306,7 +358,25 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
             put(k, i, j, std::max(sigma[k], oracle.ground_floor(j, headings[k])) * 180.0 / std::numbers::pi);
           break;
         case Product::Svf: put(0, i, j, svf_from_horizon(sigma)); break;
-        case Product::Skyview: put(0, i, j, skyview_from_horizon(sigma, n)); break;
+        case Product::Skyview: {
+          if (!blockers) {
+            put(0, i, j, skyview_from_horizon(sigma, n));
+            break;
+          }
+          double skyview = skyview_from_math_horizon(sigma, headings, n);
+          if (blockers->touches_sky(i, j)) {
+            if (options.exact) {
+              skyview += blockers->exact_skyview_delta(i, j, n, sigma);
+            } else {
+              floor_horizons(n);
+              sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
+              sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
+              if (block(i, j, n)) skyview += uniform_sky->radiance(delta, {}, n);
+            }
+          }
+          put(0, i, j, skyview);
+          break;
+        }
         case Product::Shaded:
         case Product::Irradiance: {
           std::vector<double>& v = log_route ? log_vis : vis;
@@ -314,16 +384,18 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
           if (reuse) {
             std::copy_n(visibility_.values.begin() + static_cast<std::ptrdiff_t>(texel * v.size()), v.size(), v.begin());
           } else {
-            // Visibility horizon: floored at the tangent plane (math-notes §10.14).
-            for (std::size_t k = 0; k < sigma.size(); ++k)
-              sigma[k] = std::clamp(std::max(sigma[k], horizon::tangent_plane_floor(n, headings[k])), -std::numbers::pi / 2,
-                                    std::numbers::pi / 2);
-            if (log_route)
+            floor_horizons(n);
+            if (log_route || blockers)
               sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
-            else
-              sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
+            if (!log_route || blockers) sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
             if (keep)
               std::copy(v.begin(), v.end(), visibility_.values.begin() + static_cast<std::ptrdiff_t>(texel * v.size()));
+            if (block(i, j, n)) {
+              if (log_route)
+                std::copy(log_sum.begin(), log_sum.end(), log_vis.begin());
+              else
+                for (std::size_t q = 0; q < vis.size(); ++q) vis[q] += delta[q];
+            }
           }
           if (!lighting) {
             const double radiance = options.shaded.albedo * uniform_sky->radiance(vis, log_vis, n);

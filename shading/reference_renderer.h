@@ -8,6 +8,7 @@
 #include "shading/renderer.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace skylit::shading {
@@ -20,6 +21,7 @@ class ReferenceRenderer final : public Renderer {
   void set_options(const ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
+  bool shades_blockers() const override { return true; }
   std::optional<std::string> lacks(Product, const ProductOptions&) const override { return std::nullopt; }
   ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) override;
   const FrameTimings& last_timings() const override { return timings_; }
@@ -32,7 +34,8 @@ class ReferenceRenderer final : public Renderer {
     int rows = 0;
     std::vector<double> values;
   };
-  ProductBands render(Product product, const ProductOptions& options, const ProgressCallback& progress);
+  ProductBands render(Product product, const ProductOptions& options, std::span<const blockers::Sphere> spheres,
+                      const ProgressCallback& progress);
 
   const terrain::HeightField* field_ = nullptr;
   ProductOptions options_;

@@ -14,9 +14,6 @@ void validate(const FrameInputs& inputs) {
     if (!std::isfinite(s.centre.x) || !std::isfinite(s.centre.y) || !std::isfinite(s.centre.z) ||
         !(s.radius > 0.0) || !std::isfinite(s.radius))
       throw std::invalid_argument("a sphere blocker needs a finite centre and a finite radius > 0");
-  if (!inputs.spheres.empty())
-    throw std::invalid_argument("sphere blockers are not shaded yet: a frame with " +
-                                std::to_string(inputs.spheres.size()) + " sphere(s) was refused");
   if (inputs.exposure && !(*inputs.exposure > 0.0 && std::isfinite(*inputs.exposure)))
     throw std::invalid_argument("a frame's exposure must be finite and > 0");
   if (inputs.lighting) validate(*inputs.lighting);

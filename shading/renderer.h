@@ -28,8 +28,8 @@ struct FrameInputs {
   std::optional<Lighting> lighting;
   // Blockers (aircraft), in the field's frame: x east and y north in metres from the
   // centre of texel (0, 0) (texel (i, j) is at (i·dx, −j·dy)), z a height in the DEM's
-  // vertical datum. Validated here; their shading arrives with the aircraft work, and a
-  // frame with spheres is refused until then rather than shaded without them.
+  // vertical datum. They darken the products whose traits say `blocked` (skyview,
+  // shaded, shadow, irradiance; blocker_frame.h); horizon and svf stay the terrain's.
   std::vector<blockers::Sphere> spheres;
   // Replaces ProductOptions::shaded.exposure for this frame (`shaded` only).
   std::optional<double> exposure;
@@ -77,6 +77,9 @@ class Renderer {
   // frame does all its work, as a benchmark of one whole frame needs.
   virtual void drop_horizons() = 0;
 
+  // Whether frames with spheres are shaded with them (a renderer that cannot refuses
+  // such frames with std::invalid_argument rather than shading without them).
+  virtual bool shades_blockers() const = 0;
   // Why this renderer cannot compute `product` with these options (one line), or nothing.
   virtual std::optional<std::string> lacks(Product product, const ProductOptions& options) const = 0;
 

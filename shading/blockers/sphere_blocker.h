@@ -21,8 +21,20 @@ struct Sphere {
 // distance d) subtends; the cap is at most a hemisphere (d ≤ r → 0).
 double sphere_cap_cos(double radius, double distance);
 
+// How a sphere's cap becomes a log-visibility vector.
+enum class CapLog {
+  kProductAlgebra,  // log*(V_cap), the inverse of exp* (cap_log_table.h)
+  kPointwise,       // LSH eq. 26: log ε · cap (over-darkens small caps 2.6× at ε = 0.1)
+};
+
 struct BlockerOptions {
-  double epsilon = sh::kDefaultLogEpsilon;  // visibility floor inside a blocker: log ε per sphere
+  CapLog log = CapLog::kProductAlgebra;
+  // kPointwise: the visibility floor inside a blocker (log ε per sphere).
+  double epsilon = sh::kDefaultLogEpsilon;
+  // kProductAlgebra: the clip of log*'s eigenvalues, the most a lone cap can hide: a
+  // receiver inside a sphere keeps 1 − clip of the hemisphere's darkening (skyview
+  // error 0.034 at 1e-3, 0.12 at 0.1, 0.48 at 0.5: tests/renderer_blockers_test.cpp).
+  double log_clip = 1e-3;
   // LSH: scale each log vector by r/d (ε_eff = ε^{r/d}: isolated spheres turn
   // semi-transparent). Off: with the HYB guards on it gains little (table D).
   bool ratio_attenuation = false;
@@ -32,6 +44,9 @@ struct BlockerOptions {
   double cull_error = 1e-4;
 };
 
+// Throws std::invalid_argument (one line) for ε ∉ (0, 1) or a negative cull error.
+void validate(const BlockerOptions& opt);
+
 enum class Cull { kKeep, kBelowTangentPlane, kTooSmall };
 
 // Why (or whether) a sphere is skipped for receiver p with unit normal n:
@@ -39,6 +54,11 @@ enum class Cull { kKeep, kBelowTangentPlane, kTooSmall };
 Cull classify_sphere(const Sphere& s, const glm::dvec3& p, const glm::dvec3& n, int order, const BlockerOptions& opt);
 // Smallest cap solid angle that survives culling at this order.
 double min_cap_solid_angle(int order, const BlockerOptions& opt);
+
+// Adds the log-visibility of one sphere to log_sh unless classify_sphere culls it
+// (returns whether it was added); zh: n doubles of scratch.
+bool add_log_visibility(const Sphere& s, const glm::dvec3& p, const glm::dvec3& n, const BlockerOptions& opt,
+                        std::span<double> zh, std::span<double> log_sh);
 
 // Adds the log-visibility of every kept sphere to log_sh (order = √size),
 // rotated toward its centre. Returns the number of spheres accumulated.

@@ -114,4 +114,18 @@ Vec exp_product_algebra(std::span<const double> f) {
   return out;
 }
 
+Vec log_product_algebra(std::span<const double> v, double floor) {
+  const int order = order_of(v.size());
+  const int nc = num_coeffs(order);
+  std::vector<double> a = triple_product(order).matrix(v), e;
+  jacobi_eigen(a, e, nc);
+  // log(M)·1 = E·log Λ·Eᵀ·1 with 1 = √(4π)·e_0.
+  Vec out(nc, 0.0);
+  for (int j = 0; j < nc; ++j) {
+    const double w = std::log(std::max(a[j * nc + j], floor)) * e[j] * kSqrt4Pi;  // e[0·nc + j]
+    for (int i = 0; i < nc; ++i) out[i] += e[i * nc + j] * w;
+  }
+  return out;
+}
+
 }  // namespace skylit::sh

@@ -22,4 +22,10 @@ Vec exp_pointwise_zh(std::span<const double> zh, int nodes = 64);
 // final scale e^{f_0/√(4π) + λ_max}.
 Vec exp_product_algebra(std::span<const double> f);
 
+// Its inverse on a visibility vector v (Ren et al. 2006's log*): log(M_v)·1 by the same
+// eigendecomposition, eigenvalues clipped at `floor` > 0 (band-limited visibility can
+// dip to or below 0, where no log exists): exp_product_algebra(log_product_algebra(v))
+// = v wherever M_v's eigenvalues are ≥ floor.
+Vec log_product_algebra(std::span<const double> v, double floor);
+
 }  // namespace skylit::sh

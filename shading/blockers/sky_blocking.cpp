@@ -1,0 +1,76 @@
+#include "shading/blockers/sky_blocking.h"
+
+#include "shading/sh/sh_basis.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace skylit::blockers {
+
+bool below_horizon(const Sphere& s, const Receiver& r) {
+  const int w = static_cast<int>(r.sigma.size());
+  if (w == 0) return false;
+  const glm::dvec3 to_c = s.centre - r.position;
+  const double d = glm::length(to_c);
+  if (d <= s.radius) return false;
+  const double half = std::asin(s.radius / d);
+  const double horizontal = std::hypot(to_c.x, to_c.y);
+  const double top = std::atan2(to_c.z, horizontal) + half;
+  if (top >= std::numbers::pi / 2) return false;
+  // Azimuth half-width of the cap: asin(sin α / cos e) at the centre's elevation e.
+  const double cos_e = horizontal / d;
+  const double sin_half = std::sin(half);
+  if (sin_half >= cos_e * std::sin(std::numbers::pi / 4)) return false;  // wider than a quarter turn
+  const double spread = std::asin(sin_half / cos_e);
+  const double step = 2.0 * std::numbers::pi / w;
+  const double phi = std::atan2(to_c.y, to_c.x);
+  // Every sample from the one at or before phi − spread to the one at or after phi + spread.
+  const int k0 = static_cast<int>(std::floor((phi - spread) / step));
+  const int k1 = static_cast<int>(std::ceil((phi + spread) / step));
+  double lowest = std::numbers::pi;
+  for (int k = k0; k <= k1; ++k) lowest = std::min(lowest, r.sigma[((k % w) + w) % w]);
+  return top < lowest;
+}
+
+int block_sky(std::span<const Sphere> spheres, std::span<const std::uint32_t> candidates, const Receiver& r,
+              const SkyBlockingOptions& options, std::span<double> delta, std::span<double> log_sum,
+              std::span<double> scratch) {
+  const std::size_t size = delta.size();
+  const int order = sh::order_of(size);
+  const std::span<double> f_s = scratch.subspan(0, size), a = scratch.subspan(size, size),
+                          b = scratch.subspan(2 * size, size);
+  std::fill(f_s.begin(), f_s.end(), 0.0);
+  std::array<double, sh::kMaxOrder> zh{};
+  const std::span<double> z(zh.data(), order);
+  int kept = 0;
+  for (std::uint32_t k : candidates) {
+    const Sphere& s = spheres[k];
+    if (options.horizon_cull && below_horizon(s, r)) continue;
+    kept += add_log_visibility(s, r.position, r.normal, options.blocker, z, f_s) ? 1 : 0;
+  }
+  if (kept == 0) return 0;
+  for (std::size_t q = 0; q < size; ++q) log_sum[q] = (r.log_t.empty() ? 0.0 : r.log_t[q]) + f_s[q];
+  switch (options.composition) {
+    case Composition::kLogSum:
+      sh::exp_hyb<double>(log_sum, a, options.hyb);
+      for (std::size_t q = 0; q < size; ++q) delta[q] = a[q] - r.vis_t[q];
+      break;
+    case Composition::kDelta:
+      sh::exp_hyb<double>(log_sum, a, options.hyb);
+      sh::exp_hyb<double>(r.log_t, b, options.hyb);
+      for (std::size_t q = 0; q < size; ++q) delta[q] = a[q] - b[q];
+      break;
+    case Composition::kProduct:
+      sh::exp_hyb<double>(f_s, a, options.hyb);
+      sh::truncated_product<double>(r.vis_t, a, b);
+      for (std::size_t q = 0; q < size; ++q) delta[q] = b[q] - r.vis_t[q];
+      break;
+  }
+  return kept;
+}
+
+}  // namespace skylit::blockers

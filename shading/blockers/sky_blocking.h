@@ -1,0 +1,58 @@
+// The sky visibility of a receiver under the terrain and sphere blockers (DESIGN.md
+// "Aircraft", sky light; seed 000): the terrain's log-visibility plus each kept
+// sphere's rotated log-ZH, exponentiated by HYB (sh_exp.h, with its guards). Texels
+// where no sphere survives the culls keep the terrain's visibility and run no HYB.
+#pragma once
+
+#include "shading/blockers/sphere_blocker.h"
+#include "shading/sh/sh_exp.h"
+
+#include <cstdint>
+#include <span>
+
+namespace skylit::blockers {
+
+// How the blocked visibility V is formed from the terrain's V_T and log-visibility f_T
+// and the spheres' summed log-visibility f_S (docs/accuracy.md, aircraft):
+enum class Composition {
+  kLogSum,  // the seed: V = exp*(f_T + f_S)
+  // V = V_T + exp*(f_T + f_S) − exp*(f_T): the seed's change added to the terrain's own
+  // visibility, so V → V_T exactly as the spheres fade.
+  kDelta,
+  // V = V_T ∗ exp*(f_S), truncated SH product: the terrain's visibility untouched by
+  // HYB, the spheres' by log*/exp*. Equal to the others on small caps, and the closest
+  // to the closed form on large ones (r/d = 0.5 over a plane: skyview error 0.0075,
+  // against 0.025 and 0.029; tests/renderer_blockers_test.cpp).
+  kProduct,
+};
+
+struct SkyBlockingOptions {
+  BlockerOptions blocker;
+  Composition composition = Composition::kProduct;
+  sh::HybOptions hyb;
+  // Cull spheres whose top lies below the terrain's horizon in their direction.
+  bool horizon_cull = true;
+};
+
+// One receiver. sigma: its horizon elevations (rad, floored at the tangent plane) at the
+// math azimuths 2πk/W from +x toward +y; vis_t, log_t: the terrain's SH visibility and
+// log-visibility (log ε_T · occlusion) from them (log_t may be empty for kProduct).
+struct Receiver {
+  glm::dvec3 position, normal;
+  std::span<const double> sigma, vis_t, log_t;
+};
+
+// Whether the sphere, seen from the receiver, lies wholly below its horizon: its top
+// below the lowest horizon sample in the azimuths its cap spans (a cap wider than a
+// quarter turn is never culled).
+bool below_horizon(const Sphere& s, const Receiver& r);
+
+// For the spheres listed in `candidates`: writes delta = V − V_T and log_sum =
+// f_T + f_S (the log-BRDF mode's input; f_S alone without log_t), n² entries each, and
+// returns how many spheres survived the culls (0: delta and log_sum are untouched).
+// scratch holds 3·n² doubles. No allocation.
+int block_sky(std::span<const Sphere> spheres, std::span<const std::uint32_t> candidates, const Receiver& r,
+                     const SkyBlockingOptions& options, std::span<double> delta, std::span<double> log_sum,
+                     std::span<double> scratch);
+
+}  // namespace skylit::blockers

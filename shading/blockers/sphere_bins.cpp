@@ -1,0 +1,82 @@
+#include "shading/blockers/sphere_bins.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace skylit::blockers {
+
+double sky_reach(double radius, int order, const BlockerOptions& options) {
+  const double omega = min_cap_solid_angle(order, options);
+  if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
+  // Ω(α) = 2π(1 − cos α) = omega at the reach.
+  const double cos_a = 1.0 - omega / (2.0 * std::numbers::pi);
+  if (cos_a <= 0.0) return radius;  // only a receiver touching it keeps it
+  return radius / std::sqrt(1.0 - cos_a * cos_a);
+}
+
+SphereBins::SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid, int order,
+                       const BlockerOptions& options, std::optional<glm::dvec3> sun, double disc_radius)
+    : grid_(grid),
+      tiles_x_((grid.width + kBinTexels - 1) / kBinTexels),
+      tiles_y_((grid.height + kBinTexels - 1) / kBinTexels),
+      sky_(static_cast<std::size_t>(tiles_x_) * tiles_y_),
+      sun_(sky_.size()) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (std::uint32_t k = 0; k < spheres.size(); ++k) {
+    const Sphere& s = spheres[k];
+    // Sky: receivers within the reach; the nearest lie at height z_max.
+    const double reach = sky_reach(s.radius, order, options) + s.radius;
+    const double above = std::max(0.0, s.centre.z - grid.z_max);
+    if (reach == inf) {
+      add(sky_, k, -inf, inf, -inf, inf);
+    } else if (above < reach) {
+      const double rho = std::sqrt(reach * reach - above * above);
+      add(sky_, k, s.centre.x - rho, s.centre.x + rho, s.centre.y - rho, s.centre.y + rho);
+    }
+    // Sun: receivers at heights [z_min − r, z_max + r] whose ray toward the sun can pass
+    // within r of the centre (plus the penumbra's spread over the distance).
+    if (!sun || !(sun->z > 0.0)) continue;
+    const glm::dvec3 d = *sun;
+    const double t_near = std::max(0.0, (s.centre.z - grid.z_max - s.radius) / d.z);
+    const double t_far = (s.centre.z - grid.z_min + s.radius) / d.z;
+    if (t_far <= 0.0) continue;  // below every receiver
+    const double spread = (s.radius + t_far * std::tan(disc_radius)) / d.z;
+    const double xa = s.centre.x - d.x * t_near, xb = s.centre.x - d.x * t_far;
+    const double ya = s.centre.y - d.y * t_near, yb = s.centre.y - d.y * t_far;
+    add(sun_, k, std::min(xa, xb) - spread, std::max(xa, xb) + spread, std::min(ya, yb) - spread,
+        std::max(ya, yb) + spread);
+  }
+}
+
+void SphereBins::add(Lists& l, std::uint32_t s, double x0, double x1, double y0, double y1) {
+  // Texel i covers x ∈ [(i − ½)dx, (i + ½)dx]; row j covers y ∈ [−(j + ½)dy, −(j − ½)dy].
+  auto clamp_index = [](double v, int n) {
+    if (!(v > 0.0)) return 0;  // also −∞ and NaN
+    return v >= n - 1 ? n - 1 : static_cast<int>(v);
+  };
+  if (x1 < -0.5 * grid_.dx || x0 > (grid_.width - 0.5) * grid_.dx) return;
+  if (-y0 < -0.5 * grid_.dy || -y1 > (grid_.height - 0.5) * grid_.dy) return;
+  const int i0 = clamp_index(x0 / grid_.dx + 0.5, grid_.width), i1 = clamp_index(x1 / grid_.dx + 0.5, grid_.width);
+  const int j0 = clamp_index(-y1 / grid_.dy + 0.5, grid_.height), j1 = clamp_index(-y0 / grid_.dy + 0.5, grid_.height);
+  for (int ty = j0 / kBinTexels; ty <= j1 / kBinTexels; ++ty)
+    for (int tx = i0 / kBinTexels; tx <= i1 / kBinTexels; ++tx) l[static_cast<std::size_t>(ty) * tiles_x_ + tx].push_back(s);
+}
+
+int SphereBins::busy(const Lists& l) {
+  return static_cast<int>(std::count_if(l.begin(), l.end(), [](const auto& v) { return !v.empty(); }));
+}
+
+SphereBins::Flat SphereBins::flatten(const Lists& l) {
+  Flat f;
+  f.offsets.reserve(l.size() + 1);
+  f.offsets.push_back(0);
+  for (const auto& v : l) {
+    f.indices.insert(f.indices.end(), v.begin(), v.end());
+    f.offsets.push_back(static_cast<std::uint32_t>(f.indices.size()));
+  }
+  return f;
+}
+
+}  // namespace skylit::blockers

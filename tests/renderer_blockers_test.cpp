@@ -108,8 +108,8 @@ TEST(RendererBlockers, LowAircraftSkyviewMeetsTheTargetAgainstTheTruth) {
   // settings against --exact over the texels the aircraft changes (the target:
   // RMSE ≤ 0.002, max ≤ 0.02). The terrain's own error is taken out by comparing the
   // changes the spheres make (fast with − fast without vs exact with − exact without).
-  const terrain::HeightField f = hills(48, 4.0);
-  const glm::dvec3 centre(24 * 4.0, -24 * 4.0, f.at(24, 24) + 150.0);
+  const terrain::HeightField f = hills(32, 4.0);
+  const glm::dvec3 centre(16 * 4.0, -16 * 4.0, f.at(16, 16) + 150.0);
   ProductBands exact_bare = render(f, Product::Skyview, options(true), {});
   ProductBands fast_bare = render(f, Product::Skyview, options(), {});
   for (double span : {15.0, 35.0}) {

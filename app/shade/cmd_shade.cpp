@@ -6,6 +6,8 @@
 #include "app/common/progress.h"
 #include "app/shade/shade_output.h"
 #include "app/shade/shade_series.h"
+#include "app/shade/sphere_input.h"
+#include "shading/blocker_frame.h"
 #include "gpu/renderer_factory.h"
 #include "gpu/timer.h"
 
@@ -61,6 +63,7 @@ struct ShadeArgs {
   shading::LightingRequest lighting;
   bool no_sun = false;
   std::size_t max_frames = shading::kDefaultMaxFrames;
+  std::string spheres;  // --spheres FILE.csv
 };
 
 // The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
@@ -206,8 +209,9 @@ std::optional<sky::Observer> series_place(const ShadeArgs& a, const terrain::Hei
 int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
                      const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
                      const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
-                     OutputSpec summed_out) {
+                     OutputSpec summed_out, const std::vector<blockers::Sphere>& spheres) {
   SeriesJob job;
+  job.spheres = spheres;
   job.product = product;
   job.summed = summed;
   job.request = request;
@@ -268,8 +272,19 @@ int run_shade(const ShadeArgs& a) {
     throw std::invalid_argument("--subsample " + std::to_string(a.options.subsample) + ": " + e.what());
   }
 
+  std::vector<blockers::Sphere> crs_spheres;
+  if (!a.spheres.empty()) {
+    crs_spheres = read_spheres_csv(a.spheres);  // before the DEM: a bad file fails fast
+    if (!kind.blocked && !a.quiet)
+      std::cerr << "skylit: note: --spheres: " << a.product << " is the terrain's alone (spheres darken skyview, "
+                << "shaded, shadow and irradiance)\n";
+  }
   const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);
+  const std::vector<blockers::Sphere> spheres = to_field_frame(field, crs_spheres);
+  if (const int under = shading::BlockerFrame::below_ground(field, spheres); under > 0 && !a.quiet)
+    std::cerr << "skylit: note: --spheres: " << under << " sphere(s) centred below the ground; they shade only what "
+              << "they reach above it\n";
   const double read_ms = gpu::ms_since(read_start);
 
   shading::ProductOptions opt = a.options;
@@ -277,7 +292,8 @@ int run_shade(const ShadeArgs& a) {
   opt.threads = a.threads;
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
-  if (times) return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out));
+  if (times)
+    return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres);
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
     opt.lighting = resolved.lighting;
@@ -291,7 +307,7 @@ int run_shade(const ShadeArgs& a) {
   renderer->set_field(field);
   renderer->set_options(opt);
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  const auto bands = renderer->frame(*product, {opt.lighting, {}, std::nullopt}, [&](double f) { bar.update(f); });
+  const auto bands = renderer->frame(*product, {opt.lighting, spheres, std::nullopt}, [&](double f) { bar.update(f); });
   bar.finish();
   if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
   const auto write_start = std::chrono::steady_clock::now();
@@ -384,6 +400,9 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "START/END/STEP (2026-06-21T04:00Z/2026-06-21T20:00Z/PT15M), a comma-separated list, or a date "
                   "(2026-06-21: that local day, sunrise to sunset); frames go to one file each when OUTPUT has a "
                   "%d (frames/shadow_%04d.png), else to one GeoTIFF band each");
+  cmd->add_option("--spheres", args->spheres,
+                  "Sphere blockers (aircraft) as CSV x,y,z,radius in the DEM's CRS (z, radius in metres): they darken "
+                  "skyview, shaded, shadow and irradiance");
   cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str();

@@ -21,6 +21,7 @@ struct SeriesJob {
   std::vector<sky::UtcTime> instants;
   shading::LightingRequest request;  // everything but the time, which each frame sets
   std::optional<sky::Observer> place;
+  std::vector<blockers::Sphere> spheres;  // the same in every frame
   FrameOutputs outputs;              // summed: one file
   bool quiet = false;
   bool timings = false;

@@ -338,15 +338,19 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
                               std::numbers::pi / 2);
     };
     // ΔV of the spheres at texel (i, j) from the floored horizons, into `delta` (and the
-    // log sum into log_sum); false where none touches it. Needs vis (and log_vis) of
-    // the terrain.
+    // log sum into log_sum); false where none touches it. Needs the terrain's vis; makes
+    // its log_vis where the composition or the log route needs it and it is not made.
+    const bool needs_log_t = log_route || options.blockers.composition != blockers::Composition::kProduct;
     auto block = [&](int i, int j, const glm::dvec3& n) {
       if (!blockers || !blockers->touches_sky(i, j)) return false;
       if (options.exact) {
         blockers->exact_sky_delta(i, j, sigma, delta);
         return true;
       }
-      return blockers->sky_delta(i, j, n, sigma, vis, log_vis, delta, log_sum, block_scratch) > 0;
+      if (needs_log_t && !log_route)
+        sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
+      const std::span<const double> log_t = needs_log_t ? std::span<const double>(log_vis) : std::span<const double>();
+      return blockers->sky_delta(i, j, n, sigma, vis, log_t, delta, log_sum, block_scratch) > 0;
     };
     for (int i = 0; i < field.width; ++i) {
       if (!field.is_valid(i, j)) continue;  // stays NaN
@@ -370,7 +374,6 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
             } else {
               floor_horizons(n);
               sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
-              sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
               if (block(i, j, n)) skyview += uniform_sky->radiance(delta, {}, n);
             }
           }
@@ -385,7 +388,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
             std::copy_n(visibility_.values.begin() + static_cast<std::ptrdiff_t>(texel * v.size()), v.size(), v.begin());
           } else {
             floor_horizons(n);
-            if (log_route || blockers)
+            if (log_route)
               sh::log_visibility_from_horizon(*wedge, sigma, std::log(sh::kDefaultLogEpsilon), scratch, log_vis);
             if (!log_route || blockers) sh::visibility_from_horizon(*wedge, sigma, scratch, vis);
             if (keep)

@@ -30,7 +30,7 @@ SphereSet parse_sphere_set(const std::string& text, const std::string& origin) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax, and numbers beyond double (1e999)
     fail(origin, std::string("not valid JSON (") + e.what() + ")");
   }
   if (!doc.is_object()) fail(origin, "not a JSON object");

@@ -1,5 +1,5 @@
-// Outputs of `skylit bench`: the aligned table on stdout, the CSV, and atomic text
-// files (temp + rename: an interrupted or failed run leaves no partial file).
+// Outputs of `skylit bench`: the aligned table on stdout and the CSV (written through
+// app/common/text_file.h).
 #pragma once
 
 #include "app/bench/bench_run.h"
@@ -15,12 +15,5 @@ void print_table_row(std::ostream& out, const BenchRow& row);  // flushes: rows 
 
 // Header + one line per row; NA for errors without ground truth.
 std::string csv_text(const std::vector<BenchRow>& rows);
-
-// Throws std::runtime_error ("cannot write '<path>': <reason>", one line) unless a
-// file can be created next to `path` (checked before any work, so that a bad path
-// fails fast and leaves nothing behind).
-void check_writable(const std::string& path, const std::string& what);
-// Writes `<path>.tmp-<pid>` and renames it over `path`; throws like check_writable.
-void write_text_atomically(const std::string& path, const std::string& text, const std::string& what);
 
 }  // namespace skylit::app::bench

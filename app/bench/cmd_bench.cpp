@@ -5,6 +5,7 @@
 #include "app/bench/bench_output.h"
 #include "app/bench/bench_run.h"
 #include "app/bench/svg_plot.h"
+#include "app/common/text_file.h"
 #include "app/commands.h"
 #include "gpu/renderer_factory.h"
 

@@ -17,6 +17,7 @@ int run_cli(int argc, char** argv) {
   shade::add_sun_command(root, run);
   bench::add_bench_command(root, run);
   shade::add_scene_command(root, run);
+  flight::add_track_command(root, run);
   try {
     // CLI11 wants argv in reverse order when given as a vector.
     std::vector<std::string> args = normalise_gdal_style_args(argc, argv);

@@ -28,3 +28,9 @@ namespace skylit::app::bench {  // app/bench/: speed against error
 void add_bench_command(CLI::App& root, Action& run);
 
 }  // namespace skylit::app::bench
+
+namespace skylit::app::flight {  // app/flight/: flight tracks
+
+void add_track_command(CLI::App& root, Action& run);
+
+}  // namespace skylit::app::flight

@@ -125,7 +125,8 @@ void parse_b_record(IgcState& st, Track& track, std::string_view line, std::size
   if (!parse_altitude(line.substr(25, 5), pressure) || !parse_altitude(line.substr(30, 5), gnss))
     fail(st.name, n, "B record altitudes '" + std::string(line.substr(25, 10)) + "' are not two 5-character numbers");
   fix.pressure = Altitude{static_cast<double>(pressure), AltitudeDatum::pressure_isa};
-  fix.gnss = Altitude{static_cast<double>(gnss), st.gnss_datum};
+  // A V fix has no 3-D GNSS solution: its GNSS altitude (loggers write 00000) means nothing.
+  if (fix.valid || gnss != 0) fix.gnss = Altitude{static_cast<double>(gnss), st.gnss_datum};
   st.any_pressure |= pressure != 0;
   st.any_gnss |= gnss != 0;
   for (const Extension& e : st.extensions)

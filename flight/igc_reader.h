@@ -11,7 +11,8 @@
 //    above the WGS84 ellipsoid"), unless the file declares HFALG…:GEO (then MSL).
 //    Negative values ("-0012") parse. A channel that is 00000 in every fix of a file was
 //    not recorded (the spec's fill for a missing sensor) and is dropped.
-//  * Validity: A is a 3-D fix; V is kept, flagged invalid (Fix::valid = false).
+//  * Validity: A is a 3-D fix; V is kept, flagged invalid (Fix::valid = false); a V
+//    fix's GNSS altitude of 00000 is no altitude.
 //  * Track id: HFGID glider id, else HFCID competition id, else the A record's logger id.
 #pragma once
 

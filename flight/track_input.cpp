@@ -1,12 +1,26 @@
 #include "flight/track_input.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
 #include "flight/track_time.h"
 
 namespace skylit::flight::detail {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+// Times a track may hold: 1900-01-01 to 2200-01-01 UTC (a CSV's epoch seconds can be anything).
+const double kEarliestTime = seconds_from_civil(1900, 1, 1);
+const double kLatestTime = seconds_from_civil(2200, 1, 1);
+
+}  // namespace
 
 void fail(const std::string& name, std::size_t line, const std::string& problem) {
   throw std::invalid_argument(name + ":" + std::to_string(line) + ": " + problem);
@@ -77,14 +91,15 @@ std::string read_bounded(std::istream& in, const std::string& name) {
 void check_coordinates(const std::string& name, std::size_t line, double lat, double lon) {
   const bool ok = std::isfinite(lat) && std::isfinite(lon) && std::abs(lat) <= 90.0 && std::abs(lon) <= 180.0;
   if (ok) return;
-  const std::string problem = "coordinates lat " + std::to_string(lat) + ", lon " + std::to_string(lon) +
+  const std::string problem = "coordinates lat " + number(lat) + ", lon " + number(lon) +
                               " out of range (lat -90..90, lon -180..180)";
   if (line) fail(name, line, problem);
   fail(name, problem);
 }
 
 void append_fix(Track& track, Fix fix, const std::string& name, std::size_t line) {
-  if (!std::isfinite(fix.time_s)) fail(name, line, "time is not a finite number");
+  if (!(fix.time_s >= kEarliestTime && fix.time_s <= kLatestTime))
+    fail(name, line, "time " + number(fix.time_s) + " s out of range (years 1900 to 2199)");
   if (!track.fixes.empty() && fix.time_s <= track.fixes.back().time_s)
     fail(name, line,
          "time " + format_iso8601(fix.time_s) + (fix.time_s == track.fixes.back().time_s ? " repeats" : " runs backwards") +

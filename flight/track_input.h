@@ -52,8 +52,8 @@ std::string read_bounded(std::istream& in, const std::string& name);
 // the line (0: no line number).
 void check_coordinates(const std::string& name, std::size_t line, double lat, double lon);
 
-// Appends a fix after checking that its time is after the track's last one and that
-// the file has not exceeded kMaxFixes.
+// Appends a fix after checking that its time lies in the years 1900–2199 and after the
+// track's last one, and that the file has not exceeded kMaxFixes.
 void append_fix(Track& track, Fix fix, const std::string& name, std::size_t line);
 
 // Empty result: "NAME: no track points (what)".

@@ -110,6 +110,7 @@ std::optional<double> parse_iso8601(std::string_view text, bool assume_utc_witho
 }
 
 std::string format_iso8601(double seconds) {
+  if (!(std::abs(seconds) < 1e14)) return "(time out of range)";  // beyond ±3 million years
   const double ms_total = std::round(seconds * 1000.0);
   const long long ms = static_cast<long long>(ms_total);
   long long days = ms / 86400000;

@@ -68,6 +68,7 @@ TEST(CsvReader, Errors) {
             "f.csv:3: time 1970-01-01T00:00:05Z runs backwards (previous fix at 1970-01-01T00:00:10Z)");
   EXPECT_NE(error_of("time,lat,lon\n10,1,200\n").find("f.csv:2: coordinates"), std::string::npos);
   EXPECT_EQ(error_of("time,lat,lon\n10,north,2\n"), "f.csv:2: lat 'north' is not a number");
+  EXPECT_EQ(error_of("time,lat,lon\n1e300,1,2\n"), "f.csv:2: time 1e+300 s out of range (years 1900 to 2199)");
   EXPECT_EQ(error_of("time,lat,lon\nnoon,1,2\n"), "f.csv:2: time 'noon' is neither POSIX seconds nor ISO 8601");
 }
 

@@ -50,11 +50,12 @@ std::optional<TrackFormat> sniff_track_format(std::string_view head) {
     }
     return std::nullopt;
   }
-  if (head.front() == 'A' || head.starts_with("HF")) return TrackFormat::igc;
+  // A CSV header first: "Altitude,lat,lon" also starts with an A.
   const std::string first_line = lower(std::string(head.substr(0, head.find('\n'))));
   if (first_line.find(',') != std::string::npos && first_line.find("lat") != std::string::npos &&
       first_line.find("lon") != std::string::npos)
     return TrackFormat::csv;
+  if (head.front() == 'A' || head.starts_with("HF")) return TrackFormat::igc;
   return std::nullopt;
 }
 

@@ -45,6 +45,7 @@ TEST(TrackReader, DetectsFormatsByExtensionAndContent) {
   EXPECT_EQ(sniff_track_format("\xEF\xBB\xBF<kml xmlns=\"x\">"), TrackFormat::kml);
   EXPECT_EQ(sniff_track_format("AXCS123\r\nHFDTE010101\r\n"), TrackFormat::igc);
   EXPECT_EQ(sniff_track_format("time,icao24,lat,lon\n"), TrackFormat::csv);
+  EXPECT_EQ(sniff_track_format("Altitude,Lat,Lon,time\n"), TrackFormat::csv);
   EXPECT_FALSE(sniff_track_format("<html>"));
   EXPECT_FALSE(sniff_track_format("hello"));
   // Content decides when the extension does not.

@@ -84,7 +84,7 @@ std::vector<Track> read_csv(std::istream& in, const std::string& name) {
       const std::string* f = field(c);
       if (!f) return std::nullopt;
       double v;
-      if (!detail::parse_number(*f, v)) fail(name, n, std::string(what) + " '" + *f + "' is not a number");
+      if (!detail::parse_number(*f, v)) fail(name, n, std::string(what) + " " + detail::quoted(*f) + " is not a number");
       return v;
     };
     const auto lat = number(kLat, "lat"), lon = number(kLon, "lon");
@@ -98,7 +98,7 @@ std::vector<Track> read_csv(std::istream& in, const std::string& name) {
     double seconds;
     if (detail::parse_number(*t, seconds)) fix.time_s = seconds;
     else if (const auto iso = parse_iso8601(*t, true)) fix.time_s = *iso;
-    else fail(name, n, "time '" + *t + "' is neither POSIX seconds nor ISO 8601");
+    else fail(name, n, "time " + detail::quoted(*t) + " is neither POSIX seconds nor ISO 8601");
     if (const auto v = number(kGeo, "geoaltitude")) fix.gnss = Altitude{*v, AltitudeDatum::wgs84_ellipsoid};
     if (const auto v = number(kBaro, "baroaltitude")) fix.pressure = Altitude{*v, AltitudeDatum::pressure_isa};
     if (const auto v = number(kAlt, "alt")) fix.stated = Altitude{*v, AltitudeDatum::geoid_msl};
@@ -111,10 +111,10 @@ std::vector<Track> read_csv(std::istream& in, const std::string& name) {
     if (fresh) {
       tracks.emplace_back();
       tracks.back().format = TrackFormat::csv;
-      tracks.back().id = key;
+      tracks.back().id = detail::clean_name(key);
     }
     Track& track = tracks[it->second];
-    if (track.callsign.empty() && field(kCallsign)) track.callsign = *field(kCallsign);
+    if (track.callsign.empty() && field(kCallsign)) track.callsign = detail::clean_name(*field(kCallsign));
     if (++total > detail::kMaxFixes) fail(name, n, "more than " + std::to_string(detail::kMaxFixes) + " fixes");
     detail::append_fix(track, std::move(fix), name, n);
   }

@@ -18,7 +18,7 @@ std::vector<Track> read_gpx(std::istream& in, const std::string& name) {
     if (detail::local_name(trk) != "trk") continue;
     Track track;
     track.format = TrackFormat::gpx;
-    track.id = detail::trimmed_text(detail::child_named(trk, "name"));
+    track.id = detail::clean_name(detail::trimmed_text(detail::child_named(trk, "name")));
     for (pugi::xml_node seg = trk.first_child(); seg; seg = seg.next_sibling()) {
       if (detail::local_name(seg) != "trkseg") continue;
       for (pugi::xml_node pt = seg.first_child(); pt; pt = pt.next_sibling()) {
@@ -32,7 +32,7 @@ std::vector<Track> read_gpx(std::istream& in, const std::string& name) {
         const pugi::xml_node time = detail::child_named(pt, "time");
         if (!time) fail(name, line, "trkpt without <time>");
         const auto t = parse_iso8601(detail::trimmed_text(time));
-        if (!t) fail(name, line, "trkpt <time> '" + detail::trimmed_text(time) + "' is not an ISO 8601 time with a zone");
+        if (!t) fail(name, line, "trkpt <time> " + detail::quoted(detail::trimmed_text(time)) + " is not an ISO 8601 time with a zone");
         fix.time_s = *t;
         if (const pugi::xml_node ele = detail::child_named(pt, "ele")) {
           double metres;

@@ -61,10 +61,10 @@ void parse_date_header(IgcState& st, std::string_view line, std::size_t n) {
   if (rest.starts_with("DATE")) rest.remove_prefix(4);
   if (rest.starts_with(":")) rest.remove_prefix(1);
   if (rest.size() < 6 || !all_digits(rest.substr(0, 6)))
-    fail(st.name, n, "date header '" + std::string(line) + "' is not HFDTEddmmyy or HFDTEDATE:ddmmyy,NN");
+    fail(st.name, n, "date header " + detail::quoted(std::string(line)) + " is not HFDTEddmmyy or HFDTEDATE:ddmmyy,NN");
   const int d = to_int(rest.substr(0, 2)), m = to_int(rest.substr(2, 2)), yy = to_int(rest.substr(4, 2));
   const int y = yy < 80 ? 2000 + yy : 1900 + yy;
-  if (!is_valid_date(y, m, d)) fail(st.name, n, "date header '" + std::string(line) + "' is not a calendar date");
+  if (!is_valid_date(y, m, d)) fail(st.name, n, "date header " + detail::quoted(std::string(line)) + " is not a calendar date");
   st.day_start_s = seconds_from_civil(y, m, d);
   st.day_offset_s = 0.0;
   st.last_time_of_day.reset();
@@ -81,7 +81,7 @@ void parse_i_record(IgcState& st, std::string_view line, std::size_t n) {
     if (!all_digits(e.substr(0, 4))) fail(st.name, n, "I record extension " + std::to_string(k + 1) + " has no byte range");
     const std::size_t first = to_int(e.substr(0, 2)), last = to_int(e.substr(2, 2));
     if (first <= kBRecordBytes || last < first)
-      fail(st.name, n, "I record extension " + std::string(e.substr(4, 3)) + " has bytes " + std::to_string(first) + "-" +
+      fail(st.name, n, "I record extension " + detail::quoted(e.substr(4, 3)) + " has bytes " + std::to_string(first) + "-" +
                            std::to_string(last) + " (must follow byte 35)");
     st.extensions.push_back({first, last, std::string(e.substr(4, 3))});
   }
@@ -104,9 +104,9 @@ void parse_b_record(IgcState& st, Track& track, std::string_view line, std::size
   if (line.size() < kBRecordBytes) fail(st.name, n, "B record shorter than 35 bytes");
   if (!st.day_start_s) fail(st.name, n, "B record before any date header (HFDTE)");
   const std::string_view hms = line.substr(1, 6);
-  if (!all_digits(hms)) fail(st.name, n, "B record time '" + std::string(hms) + "' is not HHMMSS");
+  if (!all_digits(hms)) fail(st.name, n, "B record time " + detail::quoted(std::string(hms)) + " is not HHMMSS");
   const int h = to_int(hms.substr(0, 2)), mi = to_int(hms.substr(2, 2)), s = to_int(hms.substr(4, 2));
-  if (h > 23 || mi > 59 || s > 59) fail(st.name, n, "B record time '" + std::string(hms) + "' out of range");
+  if (h > 23 || mi > 59 || s > 59) fail(st.name, n, "B record time " + detail::quoted(std::string(hms)) + " out of range");
   const double tod = h * 3600.0 + mi * 60.0 + s;
   if (st.last_time_of_day && tod < *st.last_time_of_day - kSecondsPerDay / 2) st.day_offset_s += kSecondsPerDay;
   st.last_time_of_day = tod;
@@ -114,16 +114,16 @@ void parse_b_record(IgcState& st, Track& track, std::string_view line, std::size
   Fix fix;
   fix.time_s = *st.day_start_s + st.day_offset_s + tod;
   if (!parse_angle(line.substr(7, 8), 2, 'N', 'S', fix.lat_deg))
-    fail(st.name, n, "B record latitude '" + std::string(line.substr(7, 8)) + "' is not DDMMmmmN/S");
+    fail(st.name, n, "B record latitude " + detail::quoted(std::string(line.substr(7, 8))) + " is not DDMMmmmN/S");
   if (!parse_angle(line.substr(15, 9), 3, 'E', 'W', fix.lon_deg))
-    fail(st.name, n, "B record longitude '" + std::string(line.substr(15, 9)) + "' is not DDDMMmmmE/W");
+    fail(st.name, n, "B record longitude " + detail::quoted(std::string(line.substr(15, 9))) + " is not DDDMMmmmE/W");
   detail::check_coordinates(st.name, n, fix.lat_deg, fix.lon_deg);
   const char validity = line[24];
-  if (validity != 'A' && validity != 'V') fail(st.name, n, "B record validity '" + std::string(1, validity) + "' is not A or V");
+  if (validity != 'A' && validity != 'V') fail(st.name, n, "B record validity " + detail::quoted(std::string(1, validity)) + " is not A or V");
   fix.valid = validity == 'A';
   int pressure, gnss;
   if (!parse_altitude(line.substr(25, 5), pressure) || !parse_altitude(line.substr(30, 5), gnss))
-    fail(st.name, n, "B record altitudes '" + std::string(line.substr(25, 10)) + "' are not two 5-character numbers");
+    fail(st.name, n, "B record altitudes " + detail::quoted(std::string(line.substr(25, 10))) + " are not two 5-character numbers");
   fix.pressure = Altitude{static_cast<double>(pressure), AltitudeDatum::pressure_isa};
   // A V fix has no 3-D GNSS solution: its GNSS altitude (loggers write 00000) means nothing.
   if (fix.valid || gnss != 0) fix.gnss = Altitude{static_cast<double>(gnss), st.gnss_datum};
@@ -150,13 +150,6 @@ void parse_header(IgcState& st, std::string_view line, std::size_t n) {
   }
 }
 
-std::string trimmed(std::string s) {
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.pop_back();
-  std::size_t k = 0;
-  while (k < s.size() && (s[k] == ' ' || s[k] == '\t')) ++k;
-  return s.substr(k);
-}
-
 }  // namespace
 
 std::vector<Track> read_igc(std::istream& in, const std::string& name) {
@@ -172,7 +165,7 @@ std::vector<Track> read_igc(std::istream& in, const std::string& name) {
     any_line = true;
     const std::size_t n = lines.line_number();
     switch (line[0]) {
-      case 'A': if (st.logger_id.empty()) st.logger_id = trimmed(line.substr(1)); break;
+      case 'A': if (st.logger_id.empty()) st.logger_id = line.substr(1); break;
       case 'H': parse_header(st, line, n); break;
       case 'I': parse_i_record(st, line, n); break;
       case 'B': parse_b_record(st, track, line, n); break;
@@ -185,7 +178,7 @@ std::vector<Track> read_igc(std::istream& in, const std::string& name) {
     if (!st.any_pressure) f.pressure.reset();
     if (!st.any_gnss) f.gnss.reset();
   }
-  track.id = trimmed(!st.glider_id.empty() ? st.glider_id : !st.competition_id.empty() ? st.competition_id : st.logger_id);
+  track.id = detail::clean_name(!st.glider_id.empty() ? st.glider_id : !st.competition_id.empty() ? st.competition_id : st.logger_id);
   std::vector<Track> out;
   out.push_back(std::move(track));
   return out;

@@ -25,13 +25,13 @@ std::optional<AltitudeDatum> altitude_datum(const detail::XmlDocument& xml, cons
   if (m == "absolute") return AltitudeDatum::geoid_msl;
   if (m == "relativeToGround") return AltitudeDatum::above_ground;
   if (m == "clampToGround") return std::nullopt;
-  fail(name, detail::line_of(xml, mode), "altitudeMode '" + m + "' is not absolute, relativeToGround or clampToGround");
+  fail(name, detail::line_of(xml, mode), "altitudeMode " + detail::quoted(m) + " is not absolute, relativeToGround or clampToGround");
 }
 
 Track read_one(const detail::XmlDocument& xml, const pugi::xml_node& gx_track, const std::string& name) {
   Track track;
   track.format = TrackFormat::kml;
-  track.id = placemark_name(gx_track);
+  track.id = detail::clean_name(placemark_name(gx_track));
   const std::optional<AltitudeDatum> datum = altitude_datum(xml, gx_track, name);
   std::vector<pugi::xml_node> whens, coords;
   for (pugi::xml_node c = gx_track.first_child(); c; c = c.next_sibling()) {
@@ -45,7 +45,7 @@ Track read_one(const detail::XmlDocument& xml, const pugi::xml_node& gx_track, c
     const std::size_t line = detail::line_of(xml, coords[k]);
     Fix fix;
     const auto t = parse_iso8601(detail::trimmed_text(whens[k]));
-    if (!t) fail(name, detail::line_of(xml, whens[k]), "<when> '" + detail::trimmed_text(whens[k]) + "' is not an ISO 8601 time with a zone");
+    if (!t) fail(name, detail::line_of(xml, whens[k]), "<when> " + detail::quoted(detail::trimmed_text(whens[k])) + " is not an ISO 8601 time with a zone");
     fix.time_s = *t;
     std::istringstream words(detail::trimmed_text(coords[k]));
     std::string lon, lat, alt, extra;
@@ -53,7 +53,7 @@ Track read_one(const detail::XmlDocument& xml, const pugi::xml_node& gx_track, c
     double altitude = 0.0;
     if (!detail::parse_number(lon, fix.lon_deg) || !detail::parse_number(lat, fix.lat_deg) ||
         (!alt.empty() && !detail::parse_number(alt, altitude)) || !extra.empty())
-      fail(name, line, "<gx:coord> '" + detail::trimmed_text(coords[k]) + "' is not 'lon lat [alt]'");
+      fail(name, line, "<gx:coord> " + detail::quoted(detail::trimmed_text(coords[k])) + " is not 'lon lat [alt]'");
     detail::check_coordinates(name, line, fix.lat_deg, fix.lon_deg);
     if (datum) {
       if (alt.empty()) fail(name, line, "<gx:coord> has no altitude but altitudeMode needs one");

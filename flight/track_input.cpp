@@ -28,6 +28,22 @@ void fail(const std::string& name, std::size_t line, const std::string& problem)
 
 void fail(const std::string& name, const std::string& problem) { throw std::invalid_argument(name + ": " + problem); }
 
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMaxQuoted = 40;
+  std::string q = "'";
+  for (std::size_t k = 0; k < text.size() && k < kMaxQuoted; ++k)
+    q += static_cast<unsigned char>(text[k]) < 0x20 || text[k] == 0x7f ? '?' : text[k];
+  if (text.size() > kMaxQuoted) q += "...";
+  return q + "'";
+}
+
+std::string clean_name(std::string_view text) {
+  std::string s;
+  for (const char c : text) s += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+  const auto first = s.find_first_not_of(' '), last = s.find_last_not_of(' ');
+  return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+}
+
 bool looks_binary(std::string_view head) {
   std::size_t control = 0;
   for (const char ch : head) {

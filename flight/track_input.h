@@ -48,6 +48,14 @@ class LineReader {
 // The whole stream (at most kMaxXmlBytes, else an error), checked for binary content.
 std::string read_bounded(std::istream& in, const std::string& name);
 
+// File text for a message: in single quotes, control characters as '?', at most 40
+// characters (then "..."), so an error stays one line whatever the file holds.
+std::string quoted(std::string_view text);
+
+// A name from the file (track id, callsign) fit for one-line output: control
+// characters become spaces, surrounding spaces go.
+std::string clean_name(std::string_view text);
+
 // Latitude in [−90, 90], longitude in [−180, 180], both finite; else an error naming
 // the line (0: no line number).
 void check_coordinates(const std::string& name, std::size_t line, double lat, double lon);

@@ -17,9 +17,11 @@ int read_one_input(Reader read, const std::uint8_t* data, std::size_t size) {
   try {
     const auto tracks = read(in, "fuzz");
     for (const auto& t : tracks)
-      if (t.fixes.empty()) __builtin_trap();  // readers never return an empty track
+      // Readers never return an empty track, nor a name that would break a line.
+      if (t.fixes.empty() || t.id.find_first_of("\n\r") != std::string::npos) __builtin_trap();
   } catch (const std::invalid_argument& e) {
-    if (std::string(e.what()).find('\n') != std::string::npos) __builtin_trap();  // errors are one line
+    const std::string what = e.what();
+    if (what.find_first_of("\n\r") != std::string::npos) __builtin_trap();  // errors are one line
   }
   return 0;
 }

@@ -85,6 +85,11 @@ std::vector<Track> read_track_file(const std::string& path) {
   const auto format = format_from_extension(path) ? format_from_extension(path) : sniff_track_format(head);
   if (!format)
     throw std::invalid_argument(path + ": not a track file this reads (IGC, GPX, KML gx:Track or CSV with time,lat,lon)");
+  // GPX and KML are parsed whole: refuse a huge file before reading it.
+  const bool xml = *format == TrackFormat::gpx || *format == TrackFormat::kml;
+  if (xml && std::filesystem::file_size(path, ec) > detail::kMaxXmlBytes && !ec)
+    throw std::invalid_argument(path + ": larger than " + std::to_string(detail::kMaxXmlBytes >> 20) +
+                                " MiB, too large to parse as XML");
   return read_track(in, *format, path);
 }
 

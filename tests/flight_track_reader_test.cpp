@@ -114,6 +114,11 @@ TEST(TrackReader, FilesThatAreNotTracksFailInOneLine) {
   EXPECT_EQ(error_of(empty.path), empty.path + ": empty file");
   TempFile binary("bin.gpx", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
   EXPECT_EQ(error_of(binary.path), binary.path + ": binary content, not a track file");
+  {  // A sparse 300 MiB GPX is refused before it is read.
+    TempFile big("big.gpx", "<gpx>" + std::string(8192, ' '));  // text where the sniffing looks
+    std::filesystem::resize_file(big.path, 300u << 20);
+    EXPECT_EQ(error_of(big.path), big.path + ": larger than 256 MiB, too large to parse as XML");
+  }
   TempFile unknown("notes.txt", "just some words\n");
   EXPECT_NE(error_of(unknown.path).find("not a track file this reads"), std::string::npos);
 }

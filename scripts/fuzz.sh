@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes each track reader with libFuzzer for SECONDS (default 120) and folds the inputs
 # that found new coverage into fuzz/corpus/<reader>/, minimised (-set_cover_merge=1: a greedy minimum set with the same coverage), so the
-# corpus stays small. Crashes are left as crash-* files in build-fuzz/ and fail the run.
+# corpus stays small (coverage edges, not hit counts: -use_counters=0). SECONDS 0 only
+# minimises. Crashes are left as crash-* files in build-fuzz/ and fail the run.
 # Needs clang-16 (apt: clang-16 libclang-rt-16-dev).
 # Usage: scripts/fuzz.sh [SECONDS] [READER...]   (readers: igc gpx kml csv)
 set -euo pipefail
@@ -19,11 +20,13 @@ cmake --build build-fuzz --target "${readers[@]/#/fuzz_}"
 for r in "${readers[@]}"; do
   corpus="fuzz/corpus/$r"
   work=$(mktemp -d)
-  echo "fuzz: $r for ${seconds}s"
-  (cd build-fuzz && ./bin/fuzz_"$r" -max_total_time="$seconds" -max_len=8192 -timeout=10 \
-      -print_final_stats=1 "$work" "../$corpus")
+  if [ "$seconds" -gt 0 ]; then
+    echo "fuzz: $r for ${seconds}s"
+    (cd build-fuzz && ./bin/fuzz_"$r" -max_total_time="$seconds" -max_len=8192 -timeout=10 \
+        -print_final_stats=1 "$work" "../$corpus")
+  fi
   minimised=$(mktemp -d)
-  build-fuzz/bin/fuzz_"$r" -set_cover_merge=1 "$minimised" "$corpus" "$work" >/dev/null 2>&1
+  build-fuzz/bin/fuzz_"$r" -set_cover_merge=1 -use_counters=0 "$minimised" "$corpus" "$work" >/dev/null 2>&1
   rm -rf "$work"
   # Keep the hand-written seeds (readable names); replace the found inputs (named by
   # their SHA-1) by the minimised set, less what duplicates a seed.

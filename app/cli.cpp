@@ -18,6 +18,7 @@ int run_cli(int argc, char** argv) {
   bench::add_bench_command(root, run);
   shade::add_scene_command(root, run);
   flight::add_spheres_fit_command(root, run);
+  flight::add_track_command(root, run);
   try {
     // CLI11 wants argv in reverse order when given as a vector.
     std::vector<std::string> args = normalise_gdal_style_args(argc, argv);

@@ -29,8 +29,9 @@ void add_bench_command(CLI::App& root, Action& run);
 
 }  // namespace skylit::app::bench
 
-namespace skylit::app::flight {  // app/flight/: aircraft
+namespace skylit::app::flight {  // app/flight/: aircraft and their tracks
 
+void add_track_command(CLI::App& root, Action& run);
 void add_spheres_fit_command(CLI::App& root, Action& run);
 
 }  // namespace skylit::app::flight

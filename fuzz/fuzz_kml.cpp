@@ -1,0 +1,7 @@
+// libFuzzer target for the KML reader (flight/kml_reader.h).
+#include "flight/kml_reader.h"
+#include "fuzz/fuzz_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return skylit::fuzz::read_one_input(skylit::flight::read_kml, data, size);
+}

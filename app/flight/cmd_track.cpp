@@ -8,7 +8,7 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/flight/altitude_arg.h"
+#include "app/common/altitude_arg.h"
 #include "app/flight/track_report.h"
 #include "flight/track_gaps.h"
 #include "flight/track_reader.h"

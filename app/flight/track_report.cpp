@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "app/flight/altitude_arg.h"
+#include "app/common/altitude_arg.h"
 #include "flight/track_gaps.h"
 #include "flight/track_time.h"
 

@@ -7,6 +7,8 @@
 #include "app/shade/shade_output.h"
 #include "app/shade/shade_series.h"
 #include "app/shade/sphere_input.h"
+#include "app/shade/tracked_aircraft.h"
+#include "app/common/altitude_arg.h"
 #include "shading/blocker_frame.h"
 #include "gpu/renderer_factory.h"
 #include "gpu/timer.h"
@@ -64,6 +66,9 @@ struct ShadeArgs {
   bool no_sun = false;
   std::size_t max_frames = shading::kDefaultMaxFrames;
   std::string spheres;  // --spheres FILE.csv
+  std::string track;    // --track FILE
+  std::string aircraft = "glider";
+  std::string altitude = "gnss";
 };
 
 // The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
@@ -209,9 +214,18 @@ std::optional<sky::Observer> series_place(const ShadeArgs& a, const terrain::Hei
 int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
                      const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
                      const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
-                     OutputSpec summed_out, const std::vector<blockers::Sphere>& spheres) {
+                     OutputSpec summed_out, const std::vector<blockers::Sphere>& spheres,
+                     const std::optional<TrackedAircraft>& aircraft) {
   SeriesJob job;
-  job.spheres = spheres;
+  if (!spheres.empty() || aircraft)
+    job.spheres_at = [&spheres, &aircraft](double t) {
+      std::vector<blockers::Sphere> all = spheres;
+      if (aircraft) {
+        const auto flying = aircraft->spheres_at(t);
+        all.insert(all.end(), flying.begin(), flying.end());
+      }
+      return all;
+    };
   job.product = product;
   job.summed = summed;
   job.request = request;
@@ -282,6 +296,13 @@ int run_shade(const ShadeArgs& a) {
   const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);
   const std::vector<blockers::Sphere> spheres = to_field_frame(field, crs_spheres);
+  std::optional<TrackedAircraft> aircraft;
+  if (!a.track.empty()) {
+    if (a.lighting.time.empty())
+      throw std::invalid_argument("--track needs --time: the time (or series) at which to place the aircraft");
+    aircraft.emplace(a.track, a.aircraft, parse_altitude_arg(a.altitude), field);
+    if (!a.quiet) std::cerr << "skylit: aircraft: " << aircraft->summary() << "\n";
+  }
   if (const int under = shading::BlockerFrame::below_ground(field, spheres); under > 0 && !a.quiet)
     std::cerr << "skylit: note: --spheres: " << under << " sphere(s) centred below the ground; they shade only what "
               << "they reach above it\n";
@@ -293,7 +314,17 @@ int run_shade(const ShadeArgs& a) {
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
   if (times)
-    return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres);
+    return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres,
+                            aircraft);
+  std::vector<blockers::Sphere> frame_spheres = spheres;
+  if (aircraft) {
+    const double t = sky::parse_utc_time(a.lighting.time).unix_seconds;
+    const auto flying = aircraft->spheres_at(t);
+    if (flying.empty() && !a.quiet)
+      std::cerr << "skylit: note: --track: no aircraft is flying at " << a.lighting.time << " (" << aircraft->summary()
+                << ")\n";
+    frame_spheres.insert(frame_spheres.end(), flying.begin(), flying.end());
+  }
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
     opt.lighting = resolved.lighting;
@@ -307,7 +338,8 @@ int run_shade(const ShadeArgs& a) {
   renderer->set_field(field);
   renderer->set_options(opt);
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  const auto bands = renderer->frame(*product, {opt.lighting, spheres, std::nullopt}, [&](double f) { bar.update(f); });
+  const auto bands =
+      renderer->frame(*product, {opt.lighting, frame_spheres, std::nullopt}, [&](double f) { bar.update(f); });
   bar.finish();
   if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
   const auto write_start = std::chrono::steady_clock::now();
@@ -403,6 +435,13 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--spheres", args->spheres,
                   "Sphere blockers (aircraft) as CSV x,y,z,radius in the DEM's CRS (z, radius in metres): they darken "
                   "skyview, shaded, shadow and irradiance");
+  cmd->add_option("--track", args->track,
+                  "A flight track (IGC, GPX, KML gx:Track, CSV): its aircraft as sphere blockers at --time");
+  cmd->add_option("--aircraft", args->aircraft, "The sphere set of --track's aircraft: a shipped name (glider, "
+                  "light-single, airliner, helicopter, balloon) or a set.json")->capture_default_str();
+  cmd->add_option("--track-altitude", args->altitude,
+                  "--track's altitude (skylit track --altitude): gnss | pressure | agl-offset=M (--altitude is the sun's, as in gdaldem)")
+      ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str();

@@ -59,7 +59,11 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
       if (!shading::sun_above_horizon(lit.lighting.sun)) ++night;
       if (sum && !sum->needs_frame(k, lit.lighting)) continue;
       const auto start = std::chrono::steady_clock::now();
-      shading::ProductBands frame = renderer.frame(job.product, {lit.lighting, job.spheres, std::nullopt}, [&](double f) {
+      shading::ProductBands frame = renderer.frame(job.product,
+                                                   {lit.lighting,
+                                                    job.spheres_at ? job.spheres_at(job.instants[k].unix_seconds)
+                                                                   : std::vector<blockers::Sphere>{},
+                                                    std::nullopt}, [&](double f) {
         bar.update((k + f) / n);
       });
       frame_ms.push_back(gpu::ms_since(start));

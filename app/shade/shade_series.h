@@ -10,6 +10,7 @@
 #include "shading/summed_products.h"
 #include "terrain/height_field.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -21,7 +22,8 @@ struct SeriesJob {
   std::vector<sky::UtcTime> instants;
   shading::LightingRequest request;  // everything but the time, which each frame sets
   std::optional<sky::Observer> place;
-  std::vector<blockers::Sphere> spheres;  // the same in every frame
+  // The sphere blockers of a frame at a time (UTC seconds); empty: none.
+  std::function<std::vector<blockers::Sphere>(double unix_seconds)> spheres_at;
   FrameOutputs outputs;              // summed: one file
   bool quiet = false;
   bool timings = false;

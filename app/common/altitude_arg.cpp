@@ -1,11 +1,11 @@
-#include "app/flight/altitude_arg.h"
+#include "app/common/altitude_arg.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-namespace skylit::app::flight {
+namespace skylit::app {
 
 using skylit::flight::AltitudeMode;
 using skylit::flight::AltitudeSource;
@@ -37,4 +37,4 @@ std::string altitude_arg_name(const AltitudeMode& mode) {
   return "";
 }
 
-}  // namespace skylit::app::flight
+}  // namespace skylit::app

@@ -6,7 +6,7 @@
 
 #include "flight/altitude.h"
 
-namespace skylit::app::flight {
+namespace skylit::app {
 
 // Throws std::invalid_argument naming --altitude for any other spelling.
 skylit::flight::AltitudeMode parse_altitude_arg(const std::string& text);
@@ -14,4 +14,4 @@ skylit::flight::AltitudeMode parse_altitude_arg(const std::string& text);
 // "gnss", "pressure", "agl-offset=50".
 std::string altitude_arg_name(const skylit::flight::AltitudeMode& mode);
 
-}  // namespace skylit::app::flight
+}  // namespace skylit::app

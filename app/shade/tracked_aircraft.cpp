@@ -1,0 +1,81 @@
+#include "app/shade/tracked_aircraft.h"
+
+#include "app/shade/sphere_input.h"
+#include "flight/aircraft_catalog.h"
+#include "flight/lon_lat_projection.h"
+#include "flight/track_reader.h"
+#include "shading/sky/time_utc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace skylit::app::shade {
+namespace {
+
+// The DEM's height (bilinear) at CRS (x, y); NaN off the grid.
+double ground_at(const terrain::HeightField& field, double x, double y) {
+  const auto& g = field.georef.geotransform;
+  const double fi = (x - g[0]) / g[1] - 0.5, fj = (y - g[3]) / g[5] - 0.5;
+  if (!(fi >= 0.0 && fj >= 0.0 && fi <= field.width - 1 && fj <= field.height - 1))
+    return std::numeric_limits<double>::quiet_NaN();
+  const int i = std::min(static_cast<int>(fi), field.width - 2 < 0 ? 0 : field.width - 2);
+  const int j = std::min(static_cast<int>(fj), field.height - 2 < 0 ? 0 : field.height - 2);
+  const int i1 = std::min(i + 1, field.width - 1), j1 = std::min(j + 1, field.height - 1);
+  const double a = fi - i, b = fj - j;
+  return (1 - b) * ((1 - a) * field.at(i, j) + a * field.at(i1, j)) + b * ((1 - a) * field.at(i, j1) + a * field.at(i1, j1));
+}
+
+}  // namespace
+
+TrackedAircraft::TrackedAircraft(const std::string& track_path, const std::string& aircraft,
+                                 const skylit::flight::AltitudeMode& altitude, const terrain::HeightField& field)
+    : field_(field) {
+  if (field.georef.crs_wkt.empty() || !field.georef.has_geotransform)
+    throw std::invalid_argument("--track needs a DEM with a CRS and a geotransform, to place the track on it");
+  try {
+    set_ = skylit::flight::load_aircraft(aircraft);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(std::string("--aircraft: ") + e.what());
+  }
+  const std::vector<skylit::flight::Track> tracks = skylit::flight::read_track_file(track_path);
+  auto project = std::make_shared<skylit::flight::LonLatToCrs>(field.georef.crs_wkt);
+  auto resolver = std::make_shared<skylit::flight::AltitudeResolver>(
+      altitude, [&field](double x, double y) { return ground_at(field, x, y); });
+  start_ = std::numeric_limits<double>::infinity();
+  end_ = -start_;
+  for (const skylit::flight::Track& t : tracks) {
+    skylit::flight::TrackSampler s(
+        t, [project](double lon, double lat) { return (*project)(lon, lat); },
+        [resolver](const skylit::flight::Fix& f, double x, double y) { return resolver->height(f, x, y); });
+    if (s.fixes().size() < 2) continue;
+    start_ = std::min(start_, s.fixes().front().time_s);
+    end_ = std::max(end_, s.fixes().back().time_s);
+    samplers_.push_back(std::move(s));
+  }
+  if (samplers_.empty())
+    throw std::invalid_argument("--track '" + track_path + "': no track has two valid fixes with a usable altitude");
+}
+
+std::vector<blockers::Sphere> TrackedAircraft::spheres_at(double unix_seconds) const {
+  std::vector<blockers::Sphere> out;
+  for (const skylit::flight::TrackSampler& s : samplers_) {
+    std::optional<skylit::flight::Pose> pose = s.pose_at(unix_seconds);
+    if (!pose) continue;
+    // The reference point in the field frame, then the set placed around it in metres.
+    const auto at = to_field_frame(field_, {{pose->position, 1.0}}).front();
+    pose->position = at.centre;
+    for (const skylit::flight::PlacedSphere& p : skylit::flight::place(set_, *pose)) out.push_back({p.centre, p.radius});
+  }
+  return out;
+}
+
+std::string TrackedAircraft::summary() const {
+  return set_.name + " (" + std::to_string(set_.spheres.size()) + " spheres) on " + std::to_string(samplers_.size()) +
+         " track" + (samplers_.size() == 1 ? "" : "s") + ", " + sky::format_utc_time({start_}) + " to " +
+         sky::format_utc_time({end_});
+}
+
+}  // namespace skylit::app::shade

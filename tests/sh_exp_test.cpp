@@ -205,6 +205,7 @@ TEST(ShExp, HardCasesStayFiniteWithNonNegativeDc) {
       for (double eps : eps_list)
         for (bool ratio : {false, true}) {
           blockers::BlockerOptions bo;
+          bo.log = blockers::CapLog::kPointwise;  // the LSH log these measurements are of
           bo.epsilon = eps;
           bo.ratio_attenuation = ratio;
           sh::Vec f(16, 0.0);
@@ -262,6 +263,7 @@ TEST(ShExp, ExtremeFiniteInputsStayFinite) {
 TEST(ShExp, PlainFloatHybOverflowsWhereTheGuardDoesNot) {
   // math-notes T7c: plain float32 HYB gives NaN once c = f_0/√(4π) ≲ −103.
   blockers::BlockerOptions bo;
+  bo.log = blockers::CapLog::kPointwise;
   bo.epsilon = 0.001;
   sh::Vec f(16, 0.0);
   blockers::accumulate_log_visibility(scene(400, false, 99), {0, 0, 0}, {0, 0, 1}, bo, f);

@@ -341,6 +341,7 @@ TEST(ShadingModes, LogBrdfWithSpheresIsFiniteAndRoughlyRight) {
       const auto& op = sh::wedge_operator(kOrder, 8, 32, sh::WedgeInterpolation::Linear);
       sh::Vec logv = sh::log_visibility_from_horizon(op, std::vector<double>(32, 0.0), std::log(eps));
       blockers::BlockerOptions bo;
+      bo.log = blockers::CapLog::kPointwise;  // the LSH log these measurements are of
       bo.epsilon = eps;
       const auto balls = spheres(count);
       EXPECT_EQ(blockers::accumulate_log_visibility(balls, {0, 0, 0}, n, bo, logv), count);

@@ -97,7 +97,7 @@ TEST(IgcReader, OneLineErrorsNamingTheLine) {
   EXPECT_NE(error_of("HFDTE210626\nB1000004812345N01101234EX0245002480\n").find("validity"), std::string::npos);
   EXPECT_NE(error_of("HFDTE310226\n").find("not a calendar date"), std::string::npos);
   EXPECT_NE(error_of("HFDTE210626\nB10000048\n").find("shorter than 35"), std::string::npos);
-  EXPECT_NE(error_of(std::string("HFDTE21\0\0626\n", 14)).find("binary"), std::string::npos);
+  EXPECT_NE(error_of(std::string("HFDTE21") + std::string(2, '\0') + "0626\n").find("binary"), std::string::npos);
   EXPECT_NE(error_of("HFDTE210626\n" + std::string(70000, 'B')).find("longer than"), std::string::npos);
 }
 

@@ -21,9 +21,10 @@ blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field) {
   return g;
 }
 
-blockers::BlockerOptions bin_options(const ProductOptions& options) {
-  blockers::BlockerOptions b = options.blockers.blocker;
-  if (options.exact) b.cull_error = kTruthCullError;
+blockers::SkyBlockingOptions shared_budget(const ProductOptions& options, std::size_t spheres) {
+  blockers::SkyBlockingOptions b = options.blockers;
+  if (options.exact) b.blocker.cull_error = kTruthCullError;
+  b.blocker.cull_error /= static_cast<double>(std::max<std::size_t>(spheres, 1));
   return b;
 }
 
@@ -39,9 +40,9 @@ BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const bl
     : field_(field),
       spheres_(spheres),
       options_(options),
+      blocking_(shared_budget(options, spheres.size())),
       disc_radius_(sun_shadow_options(options).radius),
-      bins_(spheres, receiver_grid(field), options.shaded.sh_order, bin_options(options), sun_of(options),
-            disc_radius_) {
+      bins_(spheres, receiver_grid(field), options.shaded.sh_order, blocking_.blocker, sun_of(options), disc_radius_) {
   blockers::validate(options.blockers.blocker);
 }
 
@@ -60,7 +61,7 @@ int BlockerFrame::sky_delta(int i, int j, const glm::dvec3& normal, std::span<co
                             std::span<const double> vis_t, std::span<const double> log_t, std::span<double> delta,
                             std::span<double> log_sum, std::span<double> scratch) const {
   const blockers::Receiver r{position(i, j), normal, sigma, vis_t, log_t};
-  return blockers::block_sky(spheres_, bins_.sky(i, j), r, options_.blockers, delta, log_sum, scratch);
+  return blockers::block_sky(spheres_, bins_.sky(i, j), r, blocking_, delta, log_sum, scratch);
 }
 
 Occluders BlockerFrame::occluders(int i, int j, std::span<const double> sigma, bool with_caps, double floor_at) const {

@@ -24,6 +24,8 @@ inline constexpr int kTruthDiscSamples = 4096;
 
 class BlockerFrame {
  public:
+  // The blockers' cull error is a budget for all spheres together: each sphere is culled
+  // against 1/N of it (an aircraft is many spheres each too small to matter alone).
   BlockerFrame(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                const ProductOptions& options);
 
@@ -55,6 +57,7 @@ class BlockerFrame {
   const terrain::HeightField& field_;
   std::span<const blockers::Sphere> spheres_;
   const ProductOptions& options_;
+  blockers::SkyBlockingOptions blocking_;  // the cull error shared among the spheres
   double disc_radius_;
   blockers::SphereBins bins_;
 };

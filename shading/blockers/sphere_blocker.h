@@ -40,7 +40,8 @@ struct BlockerOptions {
   bool ratio_attenuation = false;
   // Error target for culling: a sphere is dropped when the bound on the change of
   // the visibility vector, ‖ΔV‖/√(4π) ≤ n·Ω/(4π) (Ω = cap solid angle, n = order,
-  // from |y_l0| ≤ √((2l+1)/(4π))), is below it. 0 culls nothing by size.
+  // from |y_l0| ≤ √((2l+1)/(4π))), is below it. 0 culls nothing by size. The renderer
+  // shares it among a frame's spheres (shading/blocker_frame.h).
   double cull_error = 1e-4;
 };
 

@@ -104,7 +104,7 @@ shading::ProductOptions GpuRenderer::begin_frame(Product product, const shading:
   shading::validate(inputs);
   shading::ProductOptions options = shading::frame_options(options_, inputs);
   if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
-  if (shading::traits(product).blocked && !inputs.spheres.empty() && !shades_blockers())
+  if (shading::blocked_frame(product, inputs) && !shades_blockers())
     throw std::invalid_argument("the GPU backend does not shade sphere blockers yet (the reference backend does)");
   timings_ = {};
   return options;

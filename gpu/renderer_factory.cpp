@@ -49,7 +49,7 @@ class AutoRenderer final : public shading::Renderer {
   shading::ProductBands frame(Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress) override {
     const shading::ProductOptions options = shading::frame_options(options_, inputs);
-    const bool blocked = shading::traits(product).blocked && !inputs.spheres.empty();
+    const bool blocked = shading::blocked_frame(product, inputs);
     if (gpu_ && !gpu_->lacks(product, options) && (!blocked || gpu_->shades_blockers())) {
       try {
         auto bands = gpu_->frame(product, inputs, progress);

@@ -110,15 +110,32 @@ double skyview_slice_integral(double lo, const glm::dvec3& n, double u_east, dou
   return (F(kHalfPi) - F(lower)) / std::numbers::pi;
 }
 
-double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& normal) {
-  const int w = static_cast<int>(sigma.size());
+namespace {
+
+// Σ_k slice(max(σ_k, 0), heading_of(k))·2π/W: the uniform sky exists only above the
+// horizontal.
+template <class HeadingOf>
+double skyview_sum(std::span<const double> sigma, const glm::dvec3& normal, const HeadingOf& heading_of) {
   double sum = 0.0;
-  for (int k = 0; k < w; ++k) {
-    const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(k, w));
-    // The uniform sky exists only above the horizontal.
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    const horizon::Heading u = heading_of(k);
     sum += skyview_slice_integral(std::max(sigma[k], 0.0), normal, u.east, u.north);
   }
-  return sum * horizon::kTwoPi / w;
+  return sum * horizon::kTwoPi / static_cast<double>(sigma.size());
+}
+
+}  // namespace
+
+double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& normal) {
+  const int w = static_cast<int>(sigma.size());
+  return skyview_sum(sigma, normal, [w](std::size_t k) {
+    return horizon::heading_from_geographic(horizon::band_azimuth(static_cast<int>(k), w));
+  });
+}
+
+double skyview_from_horizon(std::span<const double> sigma, std::span<const horizon::Heading> headings,
+                            const glm::dvec3& normal) {
+  return skyview_sum(sigma, normal, [&headings](std::size_t k) { return headings[k]; });
 }
 
 float srgb_code_value(double linear) {

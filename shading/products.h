@@ -159,6 +159,10 @@ ProductBands compute_product(const terrain::HeightField& field, Product product,
 // geographic azimuths A_k = k·2π/W; normal in (east, north, up), unit.
 double svf_from_horizon(const std::vector<double>& sigma);
 double skyview_from_horizon(const std::vector<double>& sigma, const glm::dvec3& normal);
+// The same for horizons at W evenly spread `headings` of one's own (the SH visibility's
+// math azimuths 2πk/W, say).
+double skyview_from_horizon(std::span<const double> sigma, std::span<const horizon::Heading> headings,
+                            const glm::dvec3& normal);
 
 // (1/π)·∫_{e ∈ (lo, π/2]} max(n·ω(e), 0) cos e de for the horizontal unit direction u
 // (east, north) of one azimuth: the exact elevation integral of one skyview slice

@@ -159,16 +159,6 @@ class HorizonSource {
   std::vector<std::vector<std::uint16_t>> far_;  // sweep: codes per heading, [j·width + i]
 };
 
-// skyview_from_horizon (products.h) for horizons at the math azimuths 2πk/W (the same
-// set as its geographic ones when 4 divides W).
-double skyview_from_math_horizon(std::span<const double> sigma, const std::vector<horizon::Heading>& headings,
-                                 const glm::dvec3& n) {
-  double sum = 0.0;
-  for (std::size_t k = 0; k < sigma.size(); ++k)
-    sum += skyview_slice_integral(std::max(sigma[k], 0.0), n, headings[k].east, headings[k].north);
-  return sum * horizon::kTwoPi / static_cast<double>(sigma.size());
-}
-
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -195,11 +185,13 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
   ProductBands out;
   if (auto night = night_shadow(product, inputs, *field_)) {
     out = std::move(*night);
-  } else if (FrameIndependentCache::applies(product) && !(traits(product).blocked && !inputs.spheres.empty())) {
+  } else if (FrameIndependentCache::applies(product) && !blocked_frame(product, inputs)) {
     out = outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress, timings_.horizons_reused,
                        [&] { return render(product, options, {}, progress); });
   } else {
-    out = render(product, options, inputs.spheres, progress);
+    std::span<const blockers::Sphere> spheres;
+    if (blocked_frame(product, inputs)) spheres = inputs.spheres;
+    out = render(product, options, spheres, progress);
   }
   ++frames_;
   timings_.frame_ms = ms_since(start);
@@ -223,7 +215,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   const ProductTraits& kind = traits(product);
   const bool rgb = rgb_bands(product, options);
   std::optional<BlockerFrame> blockers;
-  if (kind.blocked && !spheres.empty()) blockers.emplace(field, spheres, options);
+  if (!spheres.empty()) blockers.emplace(field, spheres, options);
   const bool log_route = options.shaded.mode == ShadingMode::LogBrdf;
   if (blockers && options.exact && log_route)
     throw std::invalid_argument("the exact truth with sphere blockers needs the table or triple-product shading mode");
@@ -367,7 +359,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
             put(0, i, j, skyview_from_horizon(sigma, n));
             break;
           }
-          double skyview = skyview_from_math_horizon(sigma, headings, n);
+          double skyview = skyview_from_horizon(sigma, headings, n);  // the math azimuths
           if (blockers->touches_sky(i, j)) {
             if (options.exact) {
               skyview += blockers->exact_skyview_delta(i, j, n, sigma);

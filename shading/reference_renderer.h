@@ -34,6 +34,7 @@ class ReferenceRenderer final : public Renderer {
     int rows = 0;
     std::vector<double> values;
   };
+  // `spheres`: those that darken this product (blocked_frame), else empty.
   ProductBands render(Product product, const ProductOptions& options, std::span<const blockers::Sphere> spheres,
                       const ProgressCallback& progress);
 

@@ -38,6 +38,12 @@ struct FrameInputs {
 // Throws std::invalid_argument (one line) for a non-finite or non-positive sphere.
 void validate(const FrameInputs& inputs);
 
+// Whether the frame's spheres darken this product (its traits say `blocked` and there
+// are spheres).
+inline bool blocked_frame(Product product, const FrameInputs& inputs) {
+  return traits(product).blocked && !inputs.spheres.empty();
+}
+
 // Where a frame's time went (milliseconds; wall clock unless marked).
 struct FrameTimings {
   double upload_ms = 0.0;        // the height field to the GPU (its edited rows only, or nothing)

@@ -211,6 +211,17 @@ std::optional<sky::Observer> series_place(const ShadeArgs& a, const terrain::Hei
   return place;
 }
 
+// A frame's blockers at time t (UTC seconds): the static spheres and the aircraft flying then.
+std::vector<blockers::Sphere> spheres_at(const std::vector<blockers::Sphere>& spheres,
+                                         const std::optional<TrackedAircraft>& aircraft, double t) {
+  std::vector<blockers::Sphere> all = spheres;
+  if (aircraft) {
+    const auto flying = aircraft->spheres_at(t);
+    all.insert(all.end(), flying.begin(), flying.end());
+  }
+  return all;
+}
+
 int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
                      const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
                      const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
@@ -218,14 +229,7 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
                      const std::optional<TrackedAircraft>& aircraft) {
   SeriesJob job;
   if (!spheres.empty() || aircraft)
-    job.spheres_at = [&spheres, &aircraft](double t) {
-      std::vector<blockers::Sphere> all = spheres;
-      if (aircraft) {
-        const auto flying = aircraft->spheres_at(t);
-        all.insert(all.end(), flying.begin(), flying.end());
-      }
-      return all;
-    };
+    job.spheres_at = [&spheres, &aircraft](double t) { return spheres_at(spheres, aircraft, t); };
   job.product = product;
   job.summed = summed;
   job.request = request;
@@ -316,15 +320,11 @@ int run_shade(const ShadeArgs& a) {
   if (times)
     return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres,
                             aircraft);
-  std::vector<blockers::Sphere> frame_spheres = spheres;
-  if (aircraft) {
-    const double t = sky::parse_utc_time(a.lighting.time).unix_seconds;
-    const auto flying = aircraft->spheres_at(t);
-    if (flying.empty() && !a.quiet)
-      std::cerr << "skylit: note: --track: no aircraft is flying at " << a.lighting.time << " (" << aircraft->summary()
-                << ")\n";
-    frame_spheres.insert(frame_spheres.end(), flying.begin(), flying.end());
-  }
+  const std::vector<blockers::Sphere> frame_spheres =
+      spheres_at(spheres, aircraft, aircraft ? sky::parse_utc_time(a.lighting.time).unix_seconds : 0.0);
+  if (aircraft && frame_spheres.size() == spheres.size() && !a.quiet)
+    std::cerr << "skylit: note: --track: no aircraft is flying at " << a.lighting.time << " (" << aircraft->summary()
+              << ")\n";
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
     opt.lighting = resolved.lighting;

@@ -62,18 +62,20 @@ std::vector<blockers::Sphere> read_spheres_csv(const std::string& path) {
   return out;
 }
 
-std::vector<blockers::Sphere> to_field_frame(const terrain::HeightField& field,
-                                                      const std::vector<blockers::Sphere>& crs) {
+glm::dvec2 texel_of(const terrain::HeightField& field, double x, double y) {
   const auto& g = field.georef.geotransform;
-  const bool georef = field.georef.has_geotransform && g[2] == 0.0 && g[4] == 0.0;
+  if (!field.georef.has_geotransform || g[2] != 0.0 || g[4] != 0.0) return {x, y};
+  return {(x - g[0]) / g[1] - 0.5, (y - g[3]) / g[5] - 0.5};
+}
+
+std::vector<blockers::Sphere> to_field_frame(const terrain::HeightField& field,
+                                             const std::vector<blockers::Sphere>& crs) {
   std::vector<blockers::Sphere> out;
   out.reserve(crs.size());
   for (const auto& s : crs) {
-    // Fractional texel of the centre (texel centres at integers).
-    const double i = georef ? (s.centre.x - g[0]) / g[1] - 0.5 : s.centre.x;
-    const double j = georef ? (s.centre.y - g[3]) / g[5] - 0.5 : s.centre.y;
-    const int row = std::clamp(static_cast<int>(std::lround(j)), 0, field.height - 1);
-    out.push_back({{i * field.dx(row), -j * field.dy, s.centre.z}, s.radius});
+    const glm::dvec2 t = texel_of(field, s.centre.x, s.centre.y);
+    const int row = std::clamp(static_cast<int>(std::lround(t.y)), 0, field.height - 1);
+    out.push_back({{t.x * field.dx(row), -t.y * field.dy, s.centre.z}, s.radius});
   }
   return out;
 }

@@ -6,6 +6,8 @@
 #include "shading/blockers/sphere_blocker.h"
 #include "terrain/height_field.h"
 
+#include <glm/vec2.hpp>
+
 #include <string>
 #include <vector>
 
@@ -19,8 +21,11 @@ inline constexpr std::size_t kMaxSpheres = 1'000'000;
 // than kMaxSpheres.
 std::vector<blockers::Sphere> read_spheres_csv(const std::string& path);
 
-// CRS coordinates → field frame, through the DEM's geotransform (texel (i, j) at
-// (i·dx, −j·dy); a DEM without one is in texels).
+// The fractional texel (centres at integers) of CRS coordinates (x, y), through the DEM's
+// geotransform; a DEM without one is in texels.
+glm::dvec2 texel_of(const terrain::HeightField& field, double x, double y);
+
+// CRS coordinates → field frame, through texel_of (texel (i, j) at (i·dx, −j·dy)).
 std::vector<blockers::Sphere> to_field_frame(const terrain::HeightField& field,
                                                       const std::vector<blockers::Sphere>& crs);
 

@@ -4,6 +4,7 @@
 #include "flight/aircraft_catalog.h"
 #include "flight/lon_lat_projection.h"
 #include "flight/track_reader.h"
+#include "shading/horizon/horizon_ray.h"
 #include "shading/sky/time_utc.h"
 
 #include <algorithm>
@@ -17,15 +18,9 @@ namespace {
 
 // The DEM's height (bilinear) at CRS (x, y); NaN off the grid.
 double ground_at(const terrain::HeightField& field, double x, double y) {
-  const auto& g = field.georef.geotransform;
-  const double fi = (x - g[0]) / g[1] - 0.5, fj = (y - g[3]) / g[5] - 0.5;
-  if (!(fi >= 0.0 && fj >= 0.0 && fi <= field.width - 1 && fj <= field.height - 1))
-    return std::numeric_limits<double>::quiet_NaN();
-  const int i = std::min(static_cast<int>(fi), field.width - 2 < 0 ? 0 : field.width - 2);
-  const int j = std::min(static_cast<int>(fj), field.height - 2 < 0 ? 0 : field.height - 2);
-  const int i1 = std::min(i + 1, field.width - 1), j1 = std::min(j + 1, field.height - 1);
-  const double a = fi - i, b = fj - j;
-  return (1 - b) * ((1 - a) * field.at(i, j) + a * field.at(i1, j)) + b * ((1 - a) * field.at(i, j1) + a * field.at(i1, j1));
+  const glm::dvec2 t = texel_of(field, x, y);
+  const horizon::GridPoint p{t.x, t.y};
+  return horizon::on_grid(field, p) ? horizon::bilinear_height(field, p) : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "gpu/buffers.h"
 #include "gpu/compute_program.h"
 #include "gpu/gl_context.h"
+#include "gpu/gpu_blockers.h"
 #include "gpu/gpu_pyramid.h"
 #include "gpu/resident_field.h"
 #include "gpu/shading_setup.h"
@@ -60,7 +61,13 @@ enum Binding : int {
   kCoarseSigma = 14,
   kGamma = 15,
   kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
+  kSpheres = 17,  // sphere blockers (sphere_blockers.glsl)
+  kSkyBins = 18,
+  kSunBins = 19,
+  kCapLog = 20,
 };
+
+constexpr BlockerBindings kBlockerBindings{kSpheres, kSkyBins, kSunBins, kCapLog};
 
 // Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
 // block size): k_v = 16 over a 16384² grid's diagonal needs 234.
@@ -95,13 +102,17 @@ int horizon_bands(Product product, const shading::ProductOptions& o) {
 
 bool needs_visibility(Product product) { return shading::traits(product).needs_visibility; }
 
+// Whether the product kernel computes the SH visibility: shaded and irradiance, and a
+// skyview with sphere blockers (their change is shaded by the uniform sky's table).
+bool sh_visibility(Product product, bool blocked) { return needs_visibility(product) || (blocked && product == Product::Skyview); }
+
 // Headings as compute_product uses them: geographic bands for horizon, svf and skyview;
 // the wedge operator's math-frame samples φ_j = j·2π/W for shaded and irradiance.
 // Snapped (see shading/horizon/azimuth.h) so cardinal rays along the grid's edges stay on it.
-std::vector<horizon::Heading> band_headings(Product product, int w) {
+std::vector<horizon::Heading> band_headings(Product product, int w, bool blocked) {
   std::vector<horizon::Heading> out;
   for (int k = 0; k < w; ++k)
-    out.push_back(needs_visibility(product) ? horizon::heading_from_math(horizon::kTwoPi * k / w)
+    out.push_back(sh_visibility(product, blocked) ? horizon::heading_from_math(horizon::kTwoPi * k / w)
                                             : horizon::heading_from_geographic(horizon::band_azimuth(k, w)));
   return out;
 }
@@ -451,6 +462,26 @@ struct GpuProductPipeline::Impl {
   ResidentTable schedule, sun_schedule;
   Buffer no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
+  // Sphere blockers (blocked pipelines): the frame's spheres and bins, and
+  // blocker_sun.comp, which multiplies the sun's shadow by what they leave.
+  bool blocked = false;
+  std::optional<GpuBlockers> blockers;
+  std::vector<blockers::Sphere> spheres;  // this frame's (set_spheres)
+  std::optional<ComputeProgram> blocker_sun;
+  glm::vec3 blocker_sun_dir{0.0f, 0.0f, 1.0f};
+  // The blockers' pass over the shadow in `shadow` (bound at kShadow by sun_pass).
+  double blocker_sun_stage(const terrain::HeightField& f) const {
+    if (!blocker_sun) return 0.0;
+    blockers->bind(*blocker_sun);
+    set_grid_uniforms(*blocker_sun, f);
+    blocker_sun->set_uniform("sun_dir", blocker_sun_dir.x, blocker_sun_dir.y, blocker_sun_dir.z);
+    GpuTimer timer;
+    {
+      ScopedGpuTimer timing(timer);
+      blocker_sun->dispatch_covering(f.width, f.height);
+    }
+    return timer.elapsed_ms();
+  }
   Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
   BufferTexture table_tex;  // the surface kernel's view (table mode)
   int channels = 1;               // output bands of shaded/irradiance
@@ -458,11 +489,16 @@ struct GpuProductPipeline::Impl {
   double display_per_irradiance = 0.0;  // lit shaded: the tone map's factor
 };
 
-GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOptions& options)
+GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOptions& options, bool blocked)
     : mProduct(product), mOptions(options), mImpl(new Impl) {
   validate_options(product, options);
   Impl& k = *mImpl;
+  blocked = blocked && shading::traits(product).blocked;
+  if (blocked)
+    if (const auto why = gpu_lacks_blockers(product, options)) throw std::invalid_argument(*why);
+  k.blocked = blocked;
   const bool lit = shading::uses_lighting(product, options);
+  const bool sky_vis = sh_visibility(product, blocked);
   if (sun_lit(product, options) || shading::traits(product).sun_only) {
     // Sun shadow kernel: the sun's angles as compute_product takes them from the lighting.
     const double disc_radius = shading::SunShadowOptions{}.radius;
@@ -484,10 +520,23 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     k.sun_defines = sun;
     k.sun_uniforms = sun_uniforms(options.lighting->sun.direction, k.sun_heading);
     k.sun_kernel(false);  // the march's variant now; the sweep's at its first field
+    if (blocked) {
+      GlslDefines d;
+      d.set("LOCAL_SIZE_X", kLocalSize)
+          .set("LOCAL_SIZE_Y", kLocalSize)
+          .set("PI", std::numbers::pi)
+          .set("HEIGHTS_BINDING", kHeights)
+          .set("ROW_DX_BINDING", kRowDx)
+          .set("SHADOW_BINDING", kShadow);
+      add_blocker_defines(options, kBlockerBindings, false, d);
+      k.blocker_sun.emplace(ComputeProgram::from_embedded("blocker_sun.comp", d));
+      k.blocker_sun_dir = glm::vec3(options.lighting->sun.direction);
+    }
   }
+  if (blocked) k.blockers.emplace(options, kBlockerBindings, product != Product::Shadow);
   if (shading::traits(product).sun_only) return;  // the sun kernel alone
   k.azimuths = horizon_bands(product, options);
-  k.band_headings = band_headings(product, k.azimuths);
+  k.band_headings = band_headings(product, k.azimuths, blocked);
   std::vector<float> headings;
   for (const horizon::Heading& u : k.band_headings) {
     headings.push_back(static_cast<float>(u.east));
@@ -538,12 +587,17 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       .set("VALID_BINDING", kValid)
       .set("OUTPUT_BINDING", kOutput);
   if (options.exact) prod.set("STEP_TEXELS", options.exact_options.step_texels);
-  if (needs_visibility(product)) {
+  if (sky_vis) {
     const shading::ShadedOptions& s = options.shaded;
     const sh::WedgeOperator& op = sh::wedge_operator(s.sh_order, s.nlp_order, k.azimuths, s.wedge);
     // The sky shading as the reference sets it up; gpu_products_test /
-    // gpu_lighting_test / gpu_shading_modes_test fail if the two diverge.
-    const ShadingSetup shading = shading_setup(product, options, kTable, kGamma, prod);
+    // gpu_lighting_test / gpu_shading_modes_test fail if the two diverge. A blocked
+    // skyview shades its change with the uniform sky's table, as the reference does.
+    shading::ProductOptions shading_options = options;
+    if (!needs_visibility(product)) shading_options.shaded.mode = shading::ShadingMode::SkyBrdfTable;
+    const Product shading_product = needs_visibility(product) ? product : Product::Shaded;
+    ShadingSetup shading = shading_setup(shading_product, shading_options, kTable, kGamma, prod);
+    if (blocked) add_blocker_shading(shading_options, kGamma, shading, prod);
     k.channels = shading.channels;
     k.sun_dni = shading.sun_dni;
     if (lit) {
@@ -562,8 +616,11 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     k.vis_rows = op.rows();
     k.table = Buffer::from(std::span<const float>(shading.sky));
     k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
-    if (s.mode == shading::ShadingMode::SkyBrdfTable) k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
+    if (shading_options.shaded.mode == shading::ShadingMode::SkyBrdfTable)
+      k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
+  prod.set("BLOCKERS", blocked ? 1 : 0);
+  if (blocked) add_blocker_defines(options, kBlockerBindings, true, prod);
   k.products_defines = prod;
   if (lit) k.products_sun_dir = glm::vec3(options.lighting->sun.direction);
   // The variant the options will most likely use now (compile time is reported apart);
@@ -593,6 +650,7 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
     for (const auto& p : k.sun)
       if (p) k.set_sun(*p);
   }
+  k.blocker_sun_dir = glm::vec3(lighting.sun.direction);
   if (!needs_visibility(mProduct)) return;
   GlslDefines unused;  // the kernels' defines are the same (same_baked_lighting)
   const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGamma, unused);
@@ -620,6 +678,11 @@ void GpuProductPipeline::set_exposure(double exposure) {
 }
 
 void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
+
+void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) {
+  if (!mImpl->blocked) throw std::logic_error("GpuProductPipeline::set_spheres: the pipeline was built without blockers");
+  mImpl->spheres.assign(spheres.begin(), spheres.end());
+}
 
 void GpuProductPipeline::drop_visibility() {
   Impl& k = *mImpl;
@@ -679,8 +742,10 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     k.field.row_dx().bind_storage(kRowDx);
     k.field.valid().bind_storage(kValid);
     t.upload_ms = ms_since(upload_start);
+    if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
     Buffer shadow;
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
+    t.sun_ms += k.blocker_sun_stage(field);
     shading::ProductBands out{w, h, 1, {}, {std::string(shading::product_name(mProduct))}};
     if (on_gpu) {
       k.device_out = std::move(shadow);
@@ -704,8 +769,9 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // The visibility an earlier compute() kept for this field revision (stages 1–2 and the
   // visibility are skipped), or (keeping) this one's, for the computes after it.
   const bool vis_product = needs_visibility(mProduct);
-  const bool reuse = vis_product && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
-  bool keep = vis_product && !reuse && (k.keep_vis || k.frames > 0);
+  // A blocked frame needs the horizons (the spheres' horizon cull): it keeps nothing.
+  const bool reuse = vis_product && !k.blocked && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
+  bool keep = vis_product && !k.blocked && !reuse && (k.keep_vis || k.frames > 0);
   if (keep) {
     const std::size_t vis_bytes = texels * static_cast<std::size_t>(k.vis_rows) * sizeof(float);
     k.vis_valid = false;
@@ -818,15 +884,17 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       coeffs_tex.bind_sampler(kCoeffs);
     }
   }
-  if (needs_visibility(mProduct)) {
+  if (sh_visibility(mProduct, k.blocked)) {
     k.table.bind_storage(kTable);  // the sky SH of the SH modes
     if (k.table_tex.id()) k.table_tex.bind_sampler(kTable);
     k.gamma.bind_storage(kGamma);
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
+  if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
   Buffer shadow;
   if (k.sun[0]) {
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
+    t.sun_ms += k.blocker_sun_stage(field);
     heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
   }
@@ -839,6 +907,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       k.products_kernel(mOptions, sweep, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, Impl::kReadVis);  // compiled now: later frames only read
   if (reuse || keep) k.vis.bind_storage(kVis);
+  if (k.blockers) k.blockers->bind(products);
   if (sweep) {
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
     const auto sweep_start = Clock::now();

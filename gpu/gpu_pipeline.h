@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "gpu/buffers.h"
@@ -63,7 +64,10 @@ class GpuProductPipeline {
  public:
   // Throws std::invalid_argument for options compute_product rejects or
   // !gpu_supports(product, options), and std::runtime_error if a kernel fails to compile.
-  GpuProductPipeline(shading::Product product, const shading::ProductOptions& options);
+  // `blocked`: shade sphere blockers (set_spheres) in the products whose traits say so
+  // (their kernels bake them in; gpu/gpu_blockers.h): std::invalid_argument where
+  // gpu_lacks_blockers says why not.
+  GpuProductPipeline(shading::Product product, const shading::ProductOptions& options, bool blocked = false);
   ~GpuProductPipeline();
   GpuProductPipeline(const GpuProductPipeline&) = delete;
   GpuProductPipeline& operator=(const GpuProductPipeline&) = delete;
@@ -85,6 +89,9 @@ class GpuProductPipeline {
   // horizons and the visibility. Off: the second compute() starts keeping. A field too
   // large for one storage buffer keeps nothing.
   void keep_visibility(bool keep);
+  // A blocked pipeline's spheres for the next compute()s (field frame: FrameInputs).
+  // Blocked frames keep no visibility: the spheres' horizon cull reads the horizons.
+  void set_spheres(std::span<const blockers::Sphere> spheres);
   void drop_visibility();
 
   // The field stays resident on the GPU until the next call: the same HeightField

@@ -1,5 +1,6 @@
 #include "gpu/gpu_renderer.h"
 
+#include "gpu/gpu_blockers.h"
 #include "gpu/timer.h"
 
 #include <algorithm>
@@ -70,22 +71,29 @@ std::optional<std::string> GpuRenderer::lacks(Product product, const shading::Pr
   return "the GPU cannot compute '" + name + "' with these options";
 }
 
-GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::ProductOptions& options) {
+std::optional<std::string> GpuRenderer::lacks_blockers(Product product, const shading::ProductOptions& options) const {
+  return gpu_lacks_blockers(product, options);
+}
+
+GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::ProductOptions& options, bool blocked) {
   const auto it = std::find_if(cache_.begin(), cache_.end(), [&](const Entry& e) {
-    return e.product == product && same_pipeline(product, e.options, options);
+    return e.product == product && e.blocked == blocked && same_pipeline(product, e.options, options);
   });
   if (it != cache_.end()) return *it->pipeline;
   if (cache_.size() == kCachedPipelines) cache_.pop_front();  // the oldest setting
   const auto start = std::chrono::steady_clock::now();
-  cache_.push_back({product, options, std::make_unique<GpuProductPipeline>(product, options)});
+  cache_.push_back({product, options, blocked, std::make_unique<GpuProductPipeline>(product, options, blocked)});
   timings_.compile_ms += ms_since(start);
   return *cache_.back().pipeline;
 }
 
-GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::ProductOptions& options) {
+GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::ProductOptions& options,
+                                         const shading::FrameInputs& inputs) {
   context_->make_current();
-  GpuProductPipeline& pipeline = pipeline_for(product, options);  // its construction compiles
+  const bool blocked = shading::blocked_frame(product, inputs);
+  GpuProductPipeline& pipeline = pipeline_for(product, options, blocked);  // its construction compiles
   last_ = &pipeline;
+  if (blocked) pipeline.set_spheres(inputs.spheres);
   if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
   pipeline.set_exposure(options.shaded.exposure);
   pipeline.keep_visibility(keep_);
@@ -104,8 +112,8 @@ shading::ProductOptions GpuRenderer::begin_frame(Product product, const shading:
   shading::validate(inputs);
   shading::ProductOptions options = shading::frame_options(options_, inputs);
   if (const auto why = lacks(product, options)) throw std::invalid_argument(*why);
-  if (shading::blocked_frame(product, inputs) && !shades_blockers())
-    throw std::invalid_argument("the GPU backend does not shade sphere blockers yet (the reference backend does)");
+  if (shading::blocked_frame(product, inputs))
+    if (const auto why = lacks_blockers(product, options)) throw std::invalid_argument(*why);
   timings_ = {};
   return options;
 }
@@ -115,13 +123,13 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
   const auto render = [&] {
-    GpuProductPipeline& pipeline = prepare(product, options);
+    GpuProductPipeline& pipeline = prepare(product, options, inputs);
     const double construction_ms = timings_.compile_ms;
     shading::ProductBands bands = pipeline.compute(*field_, progress, &timings_);
     timings_.compile_ms += construction_ms;
     return bands;
   };
-  shading::ProductBands out = shading::FrameIndependentCache::applies(product)
+  shading::ProductBands out = shading::FrameIndependentCache::applies(product) && !shading::blocked_frame(product, inputs)
                                   ? outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress,
                                                  timings_.horizons_reused, render)
                                   : render();
@@ -133,7 +141,7 @@ GpuFrame GpuRenderer::frame_on_gpu(Product product, const shading::FrameInputs& 
                                    const shading::ProgressCallback& progress) {
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
-  GpuProductPipeline& pipeline = prepare(product, options);
+  GpuProductPipeline& pipeline = prepare(product, options, inputs);
   const double construction_ms = timings_.compile_ms;
   const Buffer& bands = pipeline.compute_on_gpu(*field_, progress, &timings_);
   timings_.compile_ms += construction_ms;

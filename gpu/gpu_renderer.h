@@ -37,7 +37,8 @@ class GpuRenderer final : public shading::Renderer {
   void set_options(const shading::ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
-  bool shades_blockers() const override { return false; }
+  std::optional<std::string> lacks_blockers(shading::Product product,
+                                            const shading::ProductOptions& options) const override;
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
   shading::ProductBands frame(shading::Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress = {}) override;
@@ -54,14 +55,16 @@ class GpuRenderer final : public shading::Renderer {
   struct Entry {
     shading::Product product;
     shading::ProductOptions options;
+    bool blocked;  // built with sphere blockers
     std::unique_ptr<GpuProductPipeline> pipeline;
   };
   // Each pipeline holds its own copy of the field on the GPU: a few settings at most.
   static constexpr std::size_t kCachedPipelines = 4;
-  GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options);
+  GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options, bool blocked);
   // A frame's checks and options; resets the timings.
   shading::ProductOptions begin_frame(shading::Product product, const shading::FrameInputs& inputs);
-  GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options);
+  GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options,
+                              const shading::FrameInputs& inputs);
   void finish_frame(std::chrono::steady_clock::time_point start);
 
   double context_ms_ = 0.0;                    // set by the context's construction, so declared before it

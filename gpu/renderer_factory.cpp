@@ -44,13 +44,18 @@ class AutoRenderer final : public shading::Renderer {
     if (gpu_) gpu_->drop_horizons();
     if (reference_) reference_->drop_horizons();
   }
-  bool shades_blockers() const override { return true; }  // on the reference where the GPU cannot
+  // On the reference where the GPU cannot.
+  std::optional<std::string> lacks_blockers(Product, const shading::ProductOptions&) const override {
+    return std::nullopt;
+  }
   std::optional<std::string> lacks(Product, const shading::ProductOptions&) const override { return std::nullopt; }
   shading::ProductBands frame(Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress) override {
     const shading::ProductOptions options = shading::frame_options(options_, inputs);
     const bool blocked = shading::blocked_frame(product, inputs);
-    if (gpu_ && !gpu_->lacks(product, options) && (!blocked || gpu_->shades_blockers())) {
+    const std::optional<std::string> no_blockers =
+        gpu_ && blocked ? gpu_->lacks_blockers(product, options) : std::nullopt;
+    if (gpu_ && !gpu_->lacks(product, options) && !no_blockers) {
       try {
         auto bands = gpu_->frame(product, inputs, progress);
         last_on_gpu_ = true;
@@ -63,9 +68,9 @@ class AutoRenderer final : public shading::Renderer {
         why_reference_ = "the gpu backend failed";
       }
     } else {
-      why_reference_ = !gpu_                              ? "no OpenGL 4.5 context"
-                       : blocked && !gpu_->shades_blockers() ? "the GPU pipeline lacks sphere blockers"
-                                                             : "the GPU pipeline lacks these options";
+      why_reference_ = !gpu_          ? "no OpenGL 4.5 context"
+                       : no_blockers ? *no_blockers
+                                     : "the GPU pipeline lacks these options";
     }
     last_on_gpu_ = false;
     last_ = &reference();

@@ -46,7 +46,29 @@ void set_hyb_defines(const sh::HybOptions& o, GlslDefines& d) {
       .set("HYB_FLUSH_LOG", std::log(static_cast<double>(std::numeric_limits<float>::min())) + sh::kHybFlushMargin);
 }
 
+// Γ's non-zeros for GAMMA_BINDING, and the defines of sh_product.glsl and sh_exp.glsl's √(4π).
+void add_gamma(int order, int gamma_binding, ShadingSetup& out, GlslDefines& d) {
+  for (const sh::TripleEntry& e : sh::triple_product(order).entries()) {
+    out.gamma.push_back(static_cast<std::uint32_t>(e.i | e.j << 8 | e.k << 16));
+    out.gamma.push_back(std::bit_cast<std::uint32_t>(static_cast<float>(e.value)));
+  }
+  d.set("GAMMA_BINDING", gamma_binding)
+      .set("GAMMA_ENTRIES", static_cast<int>(out.gamma.size() / 2))
+      .set("SQRT_4PI", sh::kSqrt4Pi);
+}
+
 }  // namespace
+
+void add_blocker_shading(const shading::ProductOptions& options, int gamma_binding, ShadingSetup& setup,
+                         GlslDefines& d) {
+  const ShadingMode mode = options.shaded.mode;
+  if (mode == ShadingMode::LogBrdf) return;
+  if (mode == ShadingMode::SkyBrdfTable) {
+    setup.gamma.clear();  // the placeholder
+    add_gamma(options.shaded.sh_order, gamma_binding, setup, d);
+  }
+  set_hyb_defines(options.blockers.hyb, d);
+}
 
 ShadingSetup shading_setup(shading::Product product, const shading::ProductOptions& options, int table_binding,
                            int gamma_binding, GlslDefines& d) {
@@ -99,14 +121,8 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
     const shading::Shader lobe_shader(settings,
                                       shading::sky_input(mode, s.sh_order, shading::uniform_sky_radiance(), true));
     const std::span<const double> zh = mode == ShadingMode::LogBrdf ? lobe_shader.log_lobe_zh() : lobe_shader.lobe_zh();
-    for (const sh::TripleEntry& e : sh::triple_product(s.sh_order).entries()) {
-      out.gamma.push_back(static_cast<std::uint32_t>(e.i | e.j << 8 | e.k << 16));
-      out.gamma.push_back(std::bit_cast<std::uint32_t>(static_cast<float>(e.value)));
-    }
+    add_gamma(s.sh_order, gamma_binding, out, d);
     d.set("SKY_SH_BINDING", table_binding)
-        .set("GAMMA_BINDING", gamma_binding)
-        .set("GAMMA_ENTRIES", static_cast<int>(out.gamma.size() / 2))
-        .set("SQRT_4PI", sh::kSqrt4Pi)
         .set_literal("LOBE_ZH_ROTATED", glsl_float_array_literal(rotated_zh_factors(zh)));
     if (mode == ShadingMode::LogBrdf) {
       d.set("LOG_EPS", std::log(sh::kDefaultLogEpsilon));

@@ -33,4 +33,11 @@ struct ShadingSetup {
 ShadingSetup shading_setup(shading::Product product, const shading::ProductOptions& options, int table_binding,
                            int gamma_binding, GlslDefines& defines);
 
+// What sphere blockers add to a setup (surface_products.comp with BLOCKERS): Γ for
+// the SH product V_T ∗ exp*(f_S) and the HYB_* defines of options.blockers.hyb, where
+// the shading mode has not set them (the log-BRDF mode adds f_S to its own log and
+// needs neither).
+void add_blocker_shading(const shading::ProductOptions& options, int gamma_binding, ShadingSetup& setup,
+                         GlslDefines& defines);
+
 }  // namespace skylit::gpu

@@ -36,11 +36,20 @@
 // log-brdf from log-visibility slices, LOG_EPS = ln eps times the NLP occlusion);
 // SH_BASIS_NORM; PRODUCT_IRRADIANCE, LIT (0/1); with LIT: CHANNELS,
 // HAS_SKY (0/1), SUN_LIT (0/1), TABLE_SIZE (floats per channel table), SHADOW_BINDING;
-// the sun's direction and DNI are uniforms (one compiled kernel for every sun).
+// the sun's direction and DNI are uniforms (one compiled kernel for every sun);
+// BLOCKERS (0/1; 1: the defines of sphere_blockers.glsl with its sky part, and those
+// of sh_product.glsl and sh_exp.glsl).
 #include "horizon_ray.glsl"
 #include "horn_normal.glsl"
 
 #define NEEDS_VIS (PRODUCT == PRODUCT_SHADED || PRODUCT == PRODUCT_IRRADIANCE)
+// BLOCKERS (skyview, shaded, irradiance): the sky change of sphere blockers
+// (sphere_blockers.glsl); a blocked skyview computes the SH visibility too, on math
+// headings, and shades its change with the uniform sky's table (MODE_TABLE).
+#define SH_VIS (NEEDS_VIS || (BLOCKERS && PRODUCT == PRODUCT_SKYVIEW))
+#if BLOCKERS && VIS_CACHE == 2
+#error "sphere blockers need the horizons (their horizon cull): no kept visibility"
+#endif
 
 layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 1) in;
 
@@ -58,19 +67,19 @@ uniform float first_distance;  // t1 (m): the multi-resolution march's first dis
 uniform int half_texel_floor;  // or (1: horizons swept) the exact march's half texel
 #endif
 
-#if NEEDS_VIS
+#if SH_VIS
 #if SHADING_MODE == MODE_TABLE
 // shading::SkyBrdfTable::texels(), unchanged: [((layer*N_THETA + i)*N_PHI + j)*4 + c];
 // LIT: CHANNELS tables back to back, TABLE_SIZE floats each.
 // Read as rgba32f: one texel = the 4 coefficients of one layer at one grid node.
 layout(binding = TABLE_BINDING) uniform samplerBuffer table_tex;
 #endif
-#if LIT
+#endif
+#if NEEDS_VIS && LIT
 // Visible fraction of the solar disc per texel of the whole field (sun_shadow.comp).
 layout(std430, binding = SHADOW_BINDING) readonly buffer Shadow { float sun_shadow[]; };
 uniform vec3 sun_dir;             // unit, toward the sun (east, north, up)
 uniform float sun_dni[CHANNELS];  // W/m^2 per output channel
-#endif
 #endif
 
 
@@ -121,7 +130,7 @@ float skyviewSlice(float lo, vec3 n, vec2 u) {
 }
 #endif
 
-#if NEEDS_VIS
+#if SH_VIS
 // Visibility slice (sqrt 2, 0, ...) - o(e) of elevation e, from s = sin e and
 // c2 = cos^2 e: twin of sh::nlp_visibility (closed form without cancellation:
 // v_0 = (1 - sin e)/sqrt 2, v_l = sqrt((2l+1)/2)/(l(l+1)) cos^2 e P_l'(sin e)).
@@ -152,6 +161,14 @@ void nlpLogVisibility(float s, float c2, out float v[NLP_ORDER]) {
 #endif
 
 #include "sh_basis.glsl"
+// Included once, textually: the first #include of a file counts even where its #if is
+// false, so what the blockers and the SH modes share comes in here, under both conditions.
+#if BLOCKERS || SHADING_MODE != MODE_TABLE
+#include "sh_product.glsl"
+#endif
+#if BLOCKERS || SHADING_MODE == MODE_LOG_BRDF
+#include "sh_exp.glsl"
+#endif
 #if SHADING_MODE != MODE_TABLE
 #include "shading_modes.glsl"
 #endif
@@ -216,6 +233,51 @@ float shadeTable(float vis[SH_COEFFS], vec3 axis, int base) {
 #endif
 #endif
 
+#if SH_VIS
+// Tangent of the visibility horizon of band k: floored at the tangent plane
+// -atan(n_h.u / n_z) (math-notes section 10.14).
+float flooredSlope(int k, int j, int i, vec3 n) { return max(horizonSlope(k, j, i), -dot(n.xy, headings[k]) / n.z); }
+
+// The terrain's SH visibility (log-visibility in MODE_LOG_BRDF) at texel (i, j): the
+// slices of the visibility horizons e, taken as their tangents m (then sin e =
+// m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos), assembled.
+void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS]) {
+  float fc[SH_ORDER * NLP_ORDER], fs[SH_ORDER * NLP_ORDER];
+  for (int r = 0; r < SH_ORDER * NLP_ORDER; ++r) fc[r] = fs[r] = 0.0;
+  for (int k = 0; k < AZIMUTHS; ++k) {
+    float m = flooredSlope(k, j, i, n);
+    float c2 = 1.0 / (1.0 + m * m);
+    float v[NLP_ORDER];
+#if SHADING_MODE == MODE_LOG_BRDF
+    nlpLogVisibility(m * sqrt(c2), c2, v);
+#else
+    nlpVisibility(m * sqrt(c2), c2, v);
+#endif
+    addSlice(headings[k], v, fc, fs);
+  }
+  assembleWedges(fc, fs, vis);
+}
+#endif
+
+#if BLOCKERS
+#include "sphere_blockers.glsl"
+float flooredHorizon(int k, int j, int i, vec3 n) { return atan(flooredSlope(k, j, i, n)); }
+
+// The sphere blockers' f_S applied to the terrain's visibility vis (log-visibility in
+// MODE_LOG_BRDF): V_T * exp*(f_S) (blockers::Composition::kProduct); the log-BRDF mode
+// takes f_T + f_S.
+void applySpheres(float f[SH_COEFFS], inout float vis[SH_COEFFS]) {
+#if SHADING_MODE == MODE_LOG_BRDF
+  for (int r = 0; r < SH_COEFFS; ++r) vis[r] += f[r];
+#else
+  float e[SH_COEFFS], b[SH_COEFFS];
+  expHyb(f, e);
+  shProduct(vis, e, b);
+  vis = b;
+#endif
+}
+#endif
+
 void main() {
   int i = int(gl_GlobalInvocationID.x);
   int j = int(gl_GlobalInvocationID.y) + row_offset;
@@ -249,7 +311,20 @@ void main() {
   vec3 n = hornNormal(i, j);
   float sum = 0.0;
   for (int k = 0; k < AZIMUTHS; ++k) sum += skyviewSlice(max(rawHorizon(k, j, i), 0.0), n, headings[k]);
-  values[out_texel] = sum * TWO_PI / float(AZIMUTHS);
+  float skyview = sum * TWO_PI / float(AZIMUTHS);
+#if BLOCKERS
+  // The change of the visibility where a sphere survives, shaded by the uniform sky's table.
+  float f[SH_COEFFS];
+  if (sphereLogVisibility(i, j, n, f) > 0) {
+    float vis[SH_COEFFS], blocked[SH_COEFFS];
+    terrainVisibility(i, j, n, vis);
+    blocked = vis;
+    applySpheres(f, blocked);
+    for (int r = 0; r < SH_COEFFS; ++r) blocked[r] -= vis[r];
+    skyview += shadeTable(blocked, n, 0);
+  }
+#endif
+  values[out_texel] = skyview;
 #elif NEEDS_VIS
   if (!valid) {
 #if LIT
@@ -264,27 +339,14 @@ void main() {
 #if VIS_CACHE == 2
   for (int r = 0; r < SH_COEFFS; ++r) vis[r] = kept_vis[keptIndex(r, texel)];
 #else
-  float fc[SH_ORDER * NLP_ORDER], fs[SH_ORDER * NLP_ORDER];
-  for (int r = 0; r < SH_ORDER * NLP_ORDER; ++r) fc[r] = fs[r] = 0.0;
-  for (int k = 0; k < AZIMUTHS; ++k) {
-    vec2 u = headings[k];
-    // Visibility horizon e: floored at the tangent plane -atan(n_h.u / n_z)
-    // (math-notes section 10.14), in (-pi/2, pi/2). Taken as its tangent m: then
-    // sin e = m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos.
-    float m = max(horizonSlope(k, j, i), -dot(n.xy, u) / n.z);
-    float c2 = 1.0 / (1.0 + m * m);
-    float v[NLP_ORDER];
-#if SHADING_MODE == MODE_LOG_BRDF
-    nlpLogVisibility(m * sqrt(c2), c2, v);
-#else
-    nlpVisibility(m * sqrt(c2), c2, v);
-#endif
-    addSlice(u, v, fc, fs);
-  }
-  assembleWedges(fc, fs, vis);
+  terrainVisibility(i, j, n, vis);
 #if VIS_CACHE == 1
   for (int r = 0; r < SH_COEFFS; ++r) kept_vis[keptIndex(r, texel)] = vis[r];
 #endif
+#endif
+#if BLOCKERS
+  float f[SH_COEFFS];
+  if (sphereLogVisibility(i, j, n, f) > 0) applySpheres(f, vis);
 #endif
   // log-brdf: vis holds the log-visibility.
 #if SHADING_MODE != MODE_TABLE && (!LIT || HAS_SKY)

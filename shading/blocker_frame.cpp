@@ -12,6 +12,13 @@
 namespace skylit::shading {
 namespace {
 
+std::optional<glm::dvec3> sun_of(const ProductOptions& options) {
+  if (!options.lighting) return std::nullopt;
+  return options.lighting->sun.direction;
+}
+
+}  // namespace
+
 blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field) {
   blockers::ReceiverGrid g{field.width, field.height, 0.0, field.dy, 0.0, 0.0};
   for (double dx : field.dx_per_row) g.dx = std::max(g.dx, dx);
@@ -21,28 +28,28 @@ blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field) {
   return g;
 }
 
-blockers::SkyBlockingOptions shared_budget(const ProductOptions& options, std::size_t spheres) {
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::size_t spheres) {
   blockers::SkyBlockingOptions b = options.blockers;
   if (options.exact) b.blocker.cull_error = kTruthCullError;
   b.blocker.cull_error /= static_cast<double>(std::max<std::size_t>(spheres, 1));
   return b;
 }
 
-std::optional<glm::dvec3> sun_of(const ProductOptions& options) {
-  if (!options.lighting) return std::nullopt;
-  return options.lighting->sun.direction;
+blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
+                                const ProductOptions& options) {
+  return blockers::SphereBins(spheres, receiver_grid(field), options.shaded.sh_order,
+                              frame_blocking(options, spheres.size()).blocker, sun_of(options),
+                              sun_shadow_options(options).radius);
 }
-
-}  // namespace
 
 BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                            const ProductOptions& options)
     : field_(field),
       spheres_(spheres),
       options_(options),
-      blocking_(shared_budget(options, spheres.size())),
+      blocking_(frame_blocking(options, spheres.size())),
       disc_radius_(sun_shadow_options(options).radius),
-      bins_(spheres, receiver_grid(field), options.shaded.sh_order, blocking_.blocker, sun_of(options), disc_radius_) {
+      bins_(frame_bins(field, spheres, options)) {
   blockers::validate(options.blockers.blocker);
 }
 

@@ -22,6 +22,15 @@ inline constexpr double kTruthCullError = 1e-7;
 // Disc samples of the truth's sun.
 inline constexpr int kTruthDiscSamples = 4096;
 
+// The receivers of a field for sphere bins (its texels, their spacing and height range).
+blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field);
+// The blocker options of a frame of `spheres` spheres: the cull error shared among them
+// (the truth's with ProductOptions::exact).
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::size_t spheres);
+// The spheres binned over the field's texels for a frame (the GPU uploads the same).
+blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
+                                const ProductOptions& options);
+
 class BlockerFrame {
  public:
   // The blockers' cull error is a budget for all spheres together: each sphere is culled

@@ -21,7 +21,7 @@ class ReferenceRenderer final : public Renderer {
   void set_options(const ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
-  bool shades_blockers() const override { return true; }
+  std::optional<std::string> lacks_blockers(Product, const ProductOptions&) const override { return std::nullopt; }
   std::optional<std::string> lacks(Product, const ProductOptions&) const override { return std::nullopt; }
   ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) override;
   const FrameTimings& last_timings() const override { return timings_; }

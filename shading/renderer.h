@@ -83,9 +83,10 @@ class Renderer {
   // frame does all its work, as a benchmark of one whole frame needs.
   virtual void drop_horizons() = 0;
 
-  // Whether frames with spheres are shaded with them (a renderer that cannot refuses
-  // such frames with std::invalid_argument rather than shading without them).
-  virtual bool shades_blockers() const = 0;
+  // Why this renderer cannot shade sphere blockers in `product` with these options (one
+  // line), or nothing. It refuses such frames with std::invalid_argument rather than
+  // shading them without their spheres.
+  virtual std::optional<std::string> lacks_blockers(Product product, const ProductOptions& options) const = 0;
   // Why this renderer cannot compute `product` with these options (one line), or nothing.
   virtual std::optional<std::string> lacks(Product product, const ProductOptions& options) const = 0;
 

@@ -1,0 +1,94 @@
+#include "gpu/gpu_blockers.h"
+
+#include "shading/blocker_frame.h"
+#include "shading/blockers/cap_log_table.h"
+#include "shading/blockers/disc_occlusion.h"
+#include "shading/reference_pipeline.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace skylit::gpu {
+namespace {
+
+// Offsets (counting from the first index) then indices, as sphere_blockers.glsl reads them.
+std::vector<std::uint32_t> packed(const blockers::SphereBins::Flat& flat) {
+  std::vector<std::uint32_t> out(flat.offsets);
+  out.insert(out.end(), flat.indices.begin(), flat.indices.end());
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::string> gpu_lacks_blockers(shading::Product product, const shading::ProductOptions& options) {
+  if (!shading::traits(product).blocked) return std::nullopt;
+  const blockers::SkyBlockingOptions& b = options.blockers;
+  if (options.exact) return "the GPU has no exact truth for sphere blockers (the reference has: --exact)";
+  if (b.blocker.log != blockers::CapLog::kProductAlgebra)
+    return "the GPU shades sphere blockers with the log* caps only (the reference has the pointwise log)";
+  if (b.composition != blockers::Composition::kProduct && options.shaded.mode != shading::ShadingMode::LogBrdf)
+    return "the GPU composes sphere blockers by the SH product only (the reference has the others)";
+  if (b.hyb.base != sh::HybBase::kTaylor2 || !b.hyb.renormalise)
+    return "the GPU's HYB for sphere blockers needs the PS2 base with renormalisation";
+  if (!b.horizon_cull) return "the GPU always culls sphere blockers below the horizon";
+  return std::nullopt;
+}
+
+void add_blocker_defines(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky,
+                         GlslDefines& d) {
+  d.set("SPHERES_BINDING", bindings.spheres)
+      .set("SKY_BINS_BINDING", bindings.sky_bins)
+      .set("SUN_BINS_BINDING", bindings.sun_bins)
+      .set("BIN_TEXELS", blockers::kBinTexels)
+      .set("DISC_UNION_SAMPLES", blockers::kDiscUnionSamples)
+      .set("DISC_RADIUS", shading::sun_shadow_options(options).radius);
+  if (sky) d.set("CAP_LOG_BINDING", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
+}
+
+GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky)
+    : bindings_(bindings), spheres_(sizeof(float) * 4), sky_bins_(sizeof(std::uint32_t)), sun_bins_(sizeof(std::uint32_t)),
+      cap_log_(sizeof(float)) {
+  if (!sky) return;
+  const int order = options.shaded.sh_order;
+  const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
+  std::vector<float> values;
+  for (int e = 0; e < table.entries(); ++e)
+    for (int l = 0; l < order; ++l)  // scaled as sh::add_rotated_zh scales a ZH
+      values.push_back(static_cast<float>(std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)) *
+                                          table.values()[static_cast<std::size_t>(e) * order + l]));
+  cap_log_ = Buffer::from(std::span<const float>(values));
+}
+
+std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
+                                const shading::ProductOptions& options) {
+  const blockers::SphereBins bins = shading::frame_bins(field, spheres, options);
+  std::vector<float> packed_spheres;
+  for (const blockers::Sphere& s : spheres)
+    for (double v : {s.centre.x, s.centre.y, s.centre.z, s.radius}) packed_spheres.push_back(static_cast<float>(v));
+  if (packed_spheres.empty()) packed_spheres.assign(4, 0.0f);  // GL wants non-empty buffers
+  const std::vector<std::uint32_t> sky = packed(bins.flat_sky()), sun = packed(bins.flat_sun());
+  spheres_ = Buffer::from(std::span<const float>(packed_spheres));
+  sky_bins_ = Buffer::from(std::span<const std::uint32_t>(sky));
+  sun_bins_ = Buffer::from(std::span<const std::uint32_t>(sun));
+  tiles_x_ = bins.tiles_x();
+  tiles_ = bins.tiles_x() * bins.tiles_y();
+  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres.size());
+  min_cap_solid_angle_ = blockers::min_cap_solid_angle(options.shaded.sh_order, blocking.blocker);
+  ratio_attenuation_ = blocking.blocker.ratio_attenuation;
+  return spheres_.size_bytes() + sky_bins_.size_bytes() + sun_bins_.size_bytes();
+}
+
+void GpuBlockers::bind(const ComputeProgram& p) const {
+  spheres_.bind_storage(bindings_.spheres);
+  sky_bins_.bind_storage(bindings_.sky_bins);
+  sun_bins_.bind_storage(bindings_.sun_bins);
+  cap_log_.bind_storage(bindings_.cap_log);
+  p.set_uniform("bin_tiles_x", tiles_x_);
+  p.set_uniform("bin_tiles", tiles_);
+  if (p.has_uniform("min_cap_solid_angle"))
+    p.set_uniform("min_cap_solid_angle", static_cast<float>(min_cap_solid_angle_));
+  if (p.has_uniform("ratio_attenuation")) p.set_uniform("ratio_attenuation", ratio_attenuation_ ? 1.0f : 0.0f);
+}
+
+}  // namespace skylit::gpu

@@ -116,17 +116,18 @@ uniform float min_cap_solid_angle;  // the size cull (sphere_blocker.h), this fr
 uniform float ratio_attenuation;    // 1: scale each log by r/d (BlockerOptions)
 
 // Whether sphere s seen from p lies wholly below the texel's visibility horizons
-// (floored, rad; floorHorizon(k) at the math azimuths 2 pi k/AZIMUTHS) in the azimuths
-// its cap spans: blockers::below_horizon.
+// (floored, rad; flooredHorizon(k) at the math azimuths 2 pi k/AZIMUTHS) in the azimuths
+// its cap spans: blockers::below_horizon. highest: the highest of those horizons (a
+// sphere whose top rises above it is kept without reading any).
 float flooredHorizon(int k, int j, int i, vec3 n);
-bool belowHorizon(vec4 s, vec3 p, vec3 n, int i, int j) {
+bool belowHorizon(vec4 s, vec3 p, vec3 n, int i, int j, float highest) {
   vec3 to_c = s.xyz - p;
   float d = length(to_c);
   if (d <= s.w) return false;
   float half_angle = asin(s.w / d);
   float horizontal = length(to_c.xy);
   float top = atan(to_c.z, horizontal) + half_angle;
-  if (top >= HALF_PI) return false;
+  if (top >= HALF_PI || top >= highest) return false;
   float cos_e = horizontal / d, sin_half = s.w / d;
   if (sin_half >= cos_e * sin(PI / 4.0)) return false;  // wider than a quarter turn
   float spread = asin(sin_half / cos_e);
@@ -138,9 +139,16 @@ bool belowHorizon(vec4 s, vec3 p, vec3 n, int i, int j) {
   return true;
 }
 
+// Whether the texel's sky bin lists any sphere.
+bool skyBinned(int i, int j) {
+  int tile = binTile(i, j);
+  return sky_bins[tile] != sky_bins[tile + 1];
+}
+
 // f_S: the summed log*-visibility of the sky bin's spheres that survive the culls
 // (below the tangent plane, below the horizon, too small); returns how many did.
-int sphereLogVisibility(int i, int j, vec3 n, out float f[SH_COEFFS]) {
+// highest: the texel's highest visibility horizon (rad).
+int sphereLogVisibility(int i, int j, vec3 n, float highest, out float f[SH_COEFFS]) {
   for (int r = 0; r < SH_COEFFS; ++r) f[r] = 0.0;
   int tile = binTile(i, j);
   uint base = uint(bin_tiles + 1);
@@ -157,7 +165,7 @@ int sphereLogVisibility(int i, int j, vec3 n, out float f[SH_COEFFS]) {
     // Cap solid angle 2 pi (1 - cos a) = 2 pi s^2 / (1 + sqrt(1 - s^2)).
     float omega = TWO_PI * ratio * ratio / (1.0 + sqrt(max(0.0, (1.0 - ratio) * (1.0 + ratio))));
     if (omega < min_cap_solid_angle) continue;
-    if (belowHorizon(s, p, n, i, j)) continue;
+    if (belowHorizon(s, p, n, i, j, highest)) continue;
     float x = clamp(ratio * ratio, 0.0, 1.0) * float(CAP_LOG_ENTRIES - 1);
     int e = min(int(x), CAP_LOG_ENTRIES - 2);
     float t = x - float(e);

@@ -240,12 +240,15 @@ float flooredSlope(int k, int j, int i, vec3 n) { return max(horizonSlope(k, j, 
 
 // The terrain's SH visibility (log-visibility in MODE_LOG_BRDF) at texel (i, j): the
 // slices of the visibility horizons e, taken as their tangents m (then sin e =
-// m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos), assembled.
-void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS]) {
+// m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos), assembled;
+// highest: the largest m.
+void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float highest) {
   float fc[SH_ORDER * NLP_ORDER], fs[SH_ORDER * NLP_ORDER];
   for (int r = 0; r < SH_ORDER * NLP_ORDER; ++r) fc[r] = fs[r] = 0.0;
+  highest = -1.0 / 0.0;
   for (int k = 0; k < AZIMUTHS; ++k) {
     float m = flooredSlope(k, j, i, n);
+    highest = max(highest, m);
     float c2 = 1.0 / (1.0 + m * m);
     float v[NLP_ORDER];
 #if SHADING_MODE == MODE_LOG_BRDF
@@ -314,10 +317,10 @@ void main() {
   float skyview = sum * TWO_PI / float(AZIMUTHS);
 #if BLOCKERS
   // The change of the visibility where a sphere survives, shaded by the uniform sky's table.
-  float f[SH_COEFFS];
-  if (sphereLogVisibility(i, j, n, f) > 0) {
-    float vis[SH_COEFFS], blocked[SH_COEFFS];
-    terrainVisibility(i, j, n, vis);
+  float f[SH_COEFFS], vis[SH_COEFFS], highest;
+  if (skyBinned(i, j)) terrainVisibility(i, j, n, vis, highest);
+  if (skyBinned(i, j) && sphereLogVisibility(i, j, n, atan(highest), f) > 0) {
+    float blocked[SH_COEFFS];
     blocked = vis;
     applySpheres(f, blocked);
     for (int r = 0; r < SH_COEFFS; ++r) blocked[r] -= vis[r];
@@ -339,14 +342,15 @@ void main() {
 #if VIS_CACHE == 2
   for (int r = 0; r < SH_COEFFS; ++r) vis[r] = kept_vis[keptIndex(r, texel)];
 #else
-  terrainVisibility(i, j, n, vis);
+  float highest;
+  terrainVisibility(i, j, n, vis, highest);
 #if VIS_CACHE == 1
   for (int r = 0; r < SH_COEFFS; ++r) kept_vis[keptIndex(r, texel)] = vis[r];
 #endif
 #endif
 #if BLOCKERS
   float f[SH_COEFFS];
-  if (sphereLogVisibility(i, j, n, f) > 0) applySpheres(f, vis);
+  if (sphereLogVisibility(i, j, n, atan(highest), f) > 0) applySpheres(f, vis);
 #endif
   // log-brdf: vis holds the log-visibility.
 #if SHADING_MODE != MODE_TABLE && (!LIT || HAS_SKY)

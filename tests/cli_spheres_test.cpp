@@ -69,6 +69,11 @@ TEST(CliSpheres, SkyviewBelowTheSphereAndTerrainOnlyProducts) {
   ASSERT_EQ(run_skylit("shade " + dem + " -o " + out + " -p skyview --backend reference -q --spheres " + csv).status, 0);
   const double below = read_output(out).v[29 * 80 + 40];  // texel centre (500081, 4999941)
   EXPECT_NEAR(below, 1.0 - 0.2 * 0.2, 0.065 * 0.04);      // 1 − sin²α, r/d = 4/20
+  // The GPU backend (llvmpipe in CI) shades the same sphere, within the float tolerance.
+  const std::string gpu_out = dir.file("sky_gpu.tif");
+  const auto gpu = run_skylit("shade " + dem + " -o " + gpu_out + " -p skyview --backend gpu -q --spheres " + csv, true);
+  ASSERT_EQ(gpu.status, 0) << gpu.out;
+  EXPECT_NEAR(read_output(gpu_out).v[29 * 80 + 40], below, 2e-3);
   const auto svf = run_skylit("shade " + dem + " -o " + dir.file("svf.tif") + " -p svf --spheres " + csv, true);
   EXPECT_EQ(svf.status, 0) << svf.out;
   EXPECT_NE(svf.out.find("svf is the terrain's alone"), std::string::npos) << svf.out;
@@ -85,6 +90,8 @@ TEST(CliSpheres, BadFilesFailWithOneLine) {
   expect_clean_shade_failure(dir, base + write(dir, "r.csv", "x,y,z,radius\n1,2,3,0\n"), "r.csv:2: the radius");
   expect_clean_shade_failure(dir, base + write(dir, "c.csv", "x,y,z,radius\n1,2,3\n"), "expected 4 values");
   expect_clean_shade_failure(dir, base + write(dir, "o.csv", "x,y,z,radius\n"), "no spheres");
+  expect_clean_shade_failure(dir, base + write(dir, "g.csv", "x,y,z,radius\n1,2,3,4\n") + " --blocker-error -1",
+                             "--blocker-error must be");
 }
 
 }  // namespace

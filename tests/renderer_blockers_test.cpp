@@ -131,9 +131,15 @@ TEST(RendererBlockers, LowAircraftSkyviewMeetsTheTargetAgainstTheTruth) {
         EXPECT_GT(e.texels, 100);
         EXPECT_LE(e.rmse, 0.002) << span;
         EXPECT_LE(e.max, 0.02) << span;
-        // Order-4 SH spreads a small cap: a third of its change is misplaced; culled away,
-        // all of it would be.
-        EXPECT_LE(e.rmse, 0.5 * e.change_rms) << span;
+        // What the spheres change beyond the cull budget is captured: order-4 SH spreads a
+        // small cap, so a third of its change is misplaced; culled away, all of it would
+        // be. A change within the budget may be culled whole (the glider at 150 m: its
+        // sky shadow, 2e-4, is a twentieth of an 8-bit code), but by no more than it.
+        const double budget = o.blockers.blocker.cull_error;
+        if (e.change_rms > budget)
+          EXPECT_LE(e.rmse, 0.5 * e.change_rms) << span;
+        else
+          EXPECT_LE(e.max, budget) << span;
       }
     }
   }

@@ -140,7 +140,7 @@ TEST(SphereBlocker, CullsBelowTangentPlaneOnly) {
 }
 
 TEST(SphereBlocker, SizeCullingHonoursItsErrorBound) {
-  const blockers::BlockerOptions opt;  // cull_error = 1e-4
+  const blockers::BlockerOptions opt;  // the default cull_error
   for (int order : {2, 4, 8}) {
     const double omega_min = blockers::min_cap_solid_angle(order, opt);
     // Sphere at distance 1 whose cap has exactly omega_min: c = 1 − Ω/(2π), r = sin α.

@@ -25,6 +25,7 @@
 #include "terrain/synthetic.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -290,6 +291,8 @@ int run_shade(const ShadeArgs& a) {
     throw std::invalid_argument("--subsample " + std::to_string(a.options.subsample) + ": " + e.what());
   }
 
+  if (const double e = a.options.blockers.blocker.cull_error; !(e >= 0.0 && std::isfinite(e)))
+    throw std::invalid_argument("--blocker-error must be a finite number ≥ 0");
   std::vector<blockers::Sphere> crs_spheres;
   if (!a.spheres.empty()) {
     crs_spheres = read_spheres_csv(a.spheres);  // before the DEM: a bad file fails fast
@@ -435,6 +438,10 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--spheres", args->spheres,
                   "Sphere blockers (aircraft) as CSV x,y,z,radius in the DEM's CRS (z, radius in metres): they darken "
                   "skyview, shaded, shadow and irradiance");
+  cmd->add_option("--blocker-error", args->options.blockers.blocker.cull_error,
+                  "The most the spheres culled as too small or far may change a texel's sky visibility, together "
+                  "(0 culls none by size; 1e-4 for skyview changes under a quarter of an 8-bit code)")
+      ->capture_default_str();
   cmd->add_option("--track", args->track,
                   "A flight track (IGC, GPX, KML gx:Track, CSV): its aircraft as sphere blockers at --time");
   cmd->add_option("--aircraft", args->aircraft, "The sphere set of --track's aircraft: a shipped name (glider, "

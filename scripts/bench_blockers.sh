@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Sphere blockers end to end, one sitting (issue 14's speed targets): `shade -p shaded`
+# and `-p shadow` over a SIZE² DEM of 1 m texels (the built-in scene rescaled to 60 m of
+# relief) with no aircraft, one and ten 30-sphere airliners (data/aircraft/airliner.json)
+# ~150 m above the ground, on BACKEND (gpu: the GLSL path, llvmpipe without a GPU;
+# reference: the CPU), against gdaldem hillshade; and a `shadow` replay of the sample
+# glider track. Usage: scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
+# build. Prints best and median wall time over RUNS per command.
+set -euo pipefail
+size=${1:-1024}
+runs=${2:-3}
+backend=${3:-gpu}
+here=$(cd "$(dirname "$0")/.." && pwd)
+skylit="$here/build/bin/skylit"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$skylit" scene -o "$tmp/scene.tif" --size "$size" -q
+# 1 m texels, heights 400–460 m, the origin kept (UTM 32N 400000 E, 5200000 N).
+gdal_translate -q -scale 400 2200 400 460 -ot Float32 -a_ullr 400000 5200000 $((400000 + size)) $((5200000 - size)) \
+  "$tmp/scene.tif" "$tmp/dem.tif"
+
+python3 - "$here/data/aircraft/airliner.json" "$tmp" "$size" <<'PY'
+import json, sys
+spheres = json.load(open(sys.argv[1]))["spheres"]
+out, size = sys.argv[2], int(sys.argv[3])
+def write(name, centres):
+    with open(f"{out}/{name}.csv", "w") as f:
+        f.write("x,y,z,radius\n")
+        for (x, y, z) in centres:
+            for s in spheres:
+                c = s["centre"]
+                f.write(f"{x + c[0]:.3f},{y + c[1]:.3f},{z + c[2]:.3f},{s['radius']}\n")
+mid = size / 2
+write("one", [(400000 + mid, 5200000 - mid, 610)])
+write("ten", [(400000 + mid * (0.4 + 0.12 * k), 5200000 - mid * (0.5 + 0.1 * (k % 4)), 600 + 5 * k) for k in range(10)])
+PY
+
+time_runs() {  # label, command...: best and median wall seconds over $runs runs
+  local label=$1; shift
+  local times=()
+  for ((r = 0; r < runs; ++r)); do
+    local t0 t1
+    t0=$(date +%s.%N)
+    "$@" >/dev/null 2>&1 || { echo "$label: FAILED"; return 0; }
+    t1=$(date +%s.%N)
+    times+=("$(echo "$t1 - $t0" | bc)")
+  done
+  printf '%s\n' "${times[@]}" | sort -n | awk -v l="$label" '{a[NR]=$1} END {printf "%-52s best %7.2f s  median %7.2f s\n", l, a[1], a[int((NR+1)/2)]}'
+}
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "flags: $(grep -m1 flags /proc/cpuinfo | grep -o -w -E 'avx2|avx512f|fma' | sort -u | xargs)"
+"$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p shaded --backend "$backend" --spheres "$tmp/one.csv" 2>&1 |
+  tr '\r' '\n' | grep 'computed on' || true
+time_runs "gdaldem hillshade ${size}²" gdaldem hillshade -q "$tmp/dem.tif" "$tmp/gd.tif"
+sun=(--sun-azimuth 200 --sun-elevation 35)
+for p in ${PRODUCTS:-shaded shadow}; do
+  for a in none one ten; do
+    spheres=()
+    [ "$a" = none ] || spheres=(--spheres "$tmp/$a.csv")
+    time_runs "$p, aircraft: $a ($backend)" "$skylit" shade "$tmp/dem.tif" -p "$p" "${sun[@]}" "${spheres[@]}" \
+      --backend "$backend" --overwrite -o "$tmp/out.tif"
+  done
+done
+[ -n "${NO_REPLAY:-}" ] && exit 0
+# Replay: 61 shadow frames (1 s) of the sample glider over the built-in scene (30 m texels).
+replay=(--time 2026-06-21T10:00:00Z/2026-06-21T10:01:00Z/PT1S --backend "$backend" --overwrite)
+time_runs "shadow replay, 61 frames, no track ($backend)" "$skylit" shade "$tmp/scene.tif" -p shadow "${replay[@]}" \
+  -o "$tmp/frames_%03d.tif"
+time_runs "shadow replay, 61 frames, airliner on the track ($backend)" "$skylit" shade "$tmp/scene.tif" -p shadow \
+  "${replay[@]}" --track "$here/data/tracks/sample_glider.igc" --aircraft airliner -o "$tmp/frames_%03d.tif"

@@ -53,7 +53,8 @@ void add_track_command(CLI::App& root, Action& run) {
   cmd->add_option("file", args->file, "Track file")->required();
   cmd->add_flag("--json", args->json, "Print every fix (UTC time, lat, lon, altitude channels with datums, validity) and a summary as JSON");
   cmd->add_option("--altitude", args->altitude,
-                  "Also give each fix's height above the EGM96 geoid from: gnss (ellipsoidal through the geoid), pressure (ISA)");
+                  "Also give each fix's height above the EGM96 geoid from: gnss (ellipsoidal through the geoid), pressure (ISA); "
+                  "with --dem also agl-offset=M (metres above the ground)");
   cmd->add_option("--max-gap", args->max_gap_s, "Seconds between valid fixes that count as a gap")->capture_default_str();
   CLI::Option* dem = cmd->add_option(
       "--dem", args->dem,

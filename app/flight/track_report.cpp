@@ -179,7 +179,8 @@ std::string track_report_text(const std::string& file, const std::vector<fl::Tra
       for (const auto& h : heights(t, n, o, resolver))
         if (h) lo = std::min(lo, *h), hi = std::max(hi, *h);
       std::snprintf(buf, sizeof buf, "  height (%s, EGM96 MSL): %.1f to %.1f m\n", altitude_arg_name(*o.altitude).c_str(), lo, hi);
-      s += buf;
+      // agl-offset over a DEM that none of this track's fixes lies on: no height at all.
+      s += lo <= hi ? std::string(buf) : "  height (" + altitude_arg_name(*o.altitude) + ", EGM96 MSL): none\n";
     }
     if (o.terrain) {
       const TrackTerrainSummary ts = o.terrain->summary(n);

@@ -23,19 +23,36 @@ double ground_at(const terrain::HeightField& field, double x, double y) {
   return horizon::on_grid(field, p) ? horizon::bilinear_height(field, p) : std::numeric_limits<double>::quiet_NaN();
 }
 
+// The DEM must place the track (CRS, geotransform), then the set is loaded: checked in
+// this order before any track is read.
+skylit::flight::SphereSet checked_set(const terrain::HeightField& field, const std::string& aircraft) {
+  if (field.georef.crs_wkt.empty() || !field.georef.has_geotransform)
+    throw std::invalid_argument("--track needs a DEM with a CRS and a geotransform, to place the track on it");
+  try {
+    return skylit::flight::load_aircraft(aircraft);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(std::string("--aircraft: ") + e.what());
+  }
+}
+
 }  // namespace
 
 TrackedAircraft::TrackedAircraft(const std::string& track_path, const std::string& aircraft,
                                  const skylit::flight::AltitudeMode& altitude, const terrain::HeightField& field)
-    : field_(field) {
-  if (field.georef.crs_wkt.empty() || !field.georef.has_geotransform)
-    throw std::invalid_argument("--track needs a DEM with a CRS and a geotransform, to place the track on it");
-  try {
-    set_ = skylit::flight::load_aircraft(aircraft);
-  } catch (const std::exception& e) {
-    throw std::invalid_argument(std::string("--aircraft: ") + e.what());
-  }
-  const std::vector<skylit::flight::Track> tracks = skylit::flight::read_track_file(track_path);
+    : field_(field), set_(checked_set(field, aircraft)) {
+  place(skylit::flight::read_track_file(track_path), "--track '" + track_path + "'", altitude);
+}
+
+TrackedAircraft::TrackedAircraft(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
+                                 const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,
+                                 const terrain::HeightField& field)
+    : field_(field), set_(checked_set(field, aircraft)) {
+  place(tracks, source, altitude);
+}
+
+void TrackedAircraft::place(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
+                            const skylit::flight::AltitudeMode& altitude) {
+  const terrain::HeightField& field = field_;
   auto project = std::make_shared<skylit::flight::LonLatToCrs>(field.georef.crs_wkt);
   auto resolver = std::make_shared<skylit::flight::AltitudeResolver>(
       altitude, [&field](double x, double y) { return ground_at(field, x, y); });
@@ -45,31 +62,36 @@ TrackedAircraft::TrackedAircraft(const std::string& track_path, const std::strin
     skylit::flight::TrackSampler s(
         t, [project](double lon, double lat) { return (*project)(lon, lat); },
         [resolver](const skylit::flight::Fix& f, double x, double y) { return resolver->height(f, x, y); });
+    samplers_.emplace_back();
     if (s.fixes().size() < 2) continue;
     start_ = std::min(start_, s.fixes().front().time_s);
     end_ = std::max(end_, s.fixes().back().time_s);
-    samplers_.push_back(std::move(s));
+    samplers_.back() = std::move(s);
+    ++placed_;
   }
-  if (samplers_.empty())
-    throw std::invalid_argument("--track '" + track_path + "': no track has two valid fixes with a usable altitude");
+  if (placed_ == 0) throw std::invalid_argument(source + ": no track has two valid fixes with a usable altitude");
+}
+
+std::optional<skylit::flight::Pose> TrackedAircraft::pose_at(std::size_t k, double unix_seconds) const {
+  std::optional<skylit::flight::Pose> pose = samplers_[k] ? samplers_[k]->pose_at(unix_seconds) : std::nullopt;
+  if (pose) pose->position = to_field_frame(field_, {{pose->position, 1.0}}).front().centre;
+  return pose;
 }
 
 std::vector<blockers::Sphere> TrackedAircraft::spheres_at(double unix_seconds) const {
   std::vector<blockers::Sphere> out;
-  for (const skylit::flight::TrackSampler& s : samplers_) {
-    std::optional<skylit::flight::Pose> pose = s.pose_at(unix_seconds);
-    if (!pose) continue;
+  for (std::size_t k = 0; k < samplers_.size(); ++k) {
     // The reference point in the field frame, then the set placed around it in metres.
-    const auto at = to_field_frame(field_, {{pose->position, 1.0}}).front();
-    pose->position = at.centre;
+    const std::optional<skylit::flight::Pose> pose = pose_at(k, unix_seconds);
+    if (!pose) continue;
     for (const skylit::flight::PlacedSphere& p : skylit::flight::place(set_, *pose)) out.push_back({p.centre, p.radius});
   }
   return out;
 }
 
 std::string TrackedAircraft::summary() const {
-  return set_.name + " (" + std::to_string(set_.spheres.size()) + " spheres) on " + std::to_string(samplers_.size()) +
-         " track" + (samplers_.size() == 1 ? "" : "s") + ", " + sky::format_utc_time({start_}) + " to " +
+  return set_.name + " (" + std::to_string(set_.spheres.size()) + " spheres) on " + std::to_string(placed_) +
+         " track" + (placed_ == 1 ? "" : "s") + ", " + sky::format_utc_time({start_}) + " to " +
          sky::format_utc_time({end_});
 }
 

@@ -10,6 +10,7 @@
 #include "shading/blockers/sphere_blocker.h"
 #include "terrain/height_field.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,10 +22,19 @@ class TrackedAircraft {
   // or a track none of whose fixes can be placed.
   TrackedAircraft(const std::string& track_path, const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,
                   const terrain::HeightField& field);
+  // Tracks already read; `source` names them in errors ("--track 'f.igc'").
+  TrackedAircraft(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
+                  const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,
+                  const terrain::HeightField& field);
 
   // The spheres of every aircraft that has a pose at this time (none in a gap or
   // outside its track's span).
   std::vector<blockers::Sphere> spheres_at(double unix_seconds) const;
+  // Track k's aircraft (k: its index among the tracks given) at this time, its position
+  // in the field frame; nullopt when it has no pose then or fewer than two placed fixes.
+  std::optional<skylit::flight::Pose> pose_at(std::size_t k, double unix_seconds) const;
+  std::size_t tracks() const { return samplers_.size(); }
+  const skylit::flight::SphereSet& set() const { return set_; }
   // "glider (30 spheres) on 1 track, 2026-06-21T10:00:00Z to 2026-06-21T10:10:00Z".
   std::string summary() const;
   // The first and last placed fix over all tracks (UTC seconds).
@@ -32,9 +42,13 @@ class TrackedAircraft {
   double end() const { return end_; }
 
  private:
+  void place(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
+             const skylit::flight::AltitudeMode& altitude);
+
   const terrain::HeightField& field_;
   skylit::flight::SphereSet set_;
-  std::vector<skylit::flight::TrackSampler> samplers_;
+  std::vector<std::optional<skylit::flight::TrackSampler>> samplers_;  // per track given
+  std::size_t placed_ = 0;                                              // tracks with a sampler
   double start_ = 0.0, end_ = 0.0;
 };
 

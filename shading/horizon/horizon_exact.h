@@ -7,6 +7,7 @@
 
 #include "shading/horizon/azimuth.h"
 #include "shading/horizon/earth_curvature.h"
+#include "shading/horizon/horizon_ray.h"
 #include "terrain/height_field.h"
 
 namespace skylit::horizon {
@@ -23,5 +24,9 @@ double exact_step_length(const terrain::HeightField& field, int row, Heading u, 
 // Largest elevation angle (radians) from texel (i, j) along u; −∞ if the first step
 // already leaves the grid.
 double exact_max_elevation(const terrain::HeightField& field, int i, int j, Heading u, const ExactMarch& options);
+// Offset marching (seed 000 §4.1): the same from a point at height h0 (m) above level-0
+// texel coordinates `origin` on the grid; the step is that of the origin's nearest row.
+double exact_max_elevation_from(const terrain::HeightField& field, GridPoint origin, double h0, Heading u,
+                                const ExactMarch& options);
 
 }  // namespace skylit::horizon

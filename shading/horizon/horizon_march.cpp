@@ -129,7 +129,12 @@ double HorizonMarcher::height_at(int step, GridPoint p) const {
 }
 
 double HorizonMarcher::max_elevation(int i, int j, Heading u, bool early_exit, int* steps_marched) const {
-  const double h0 = field_.at(i, j);
+  return max_elevation_from(GridPoint{static_cast<double>(i), static_cast<double>(j)}, field_.at(i, j), u, early_exit,
+                            steps_marched);
+}
+
+double HorizonMarcher::max_elevation_from(GridPoint origin, double h0, Heading u, bool early_exit,
+                                          int* steps_marched) const {
   // Slopes tan ω_s of the steps that lie on the grid (a prefix of the schedule).
   // atan is monotonic, so angles are taken only where the result needs them.
   constexpr int kInline = 64;
@@ -169,7 +174,7 @@ double HorizonMarcher::max_elevation(int i, int j, Heading u, bool early_exit, i
         }
       }
     }
-    const GridPoint p = ray_point(field_, i, j, u, t);
+    const GridPoint p = ray_point(field_, origin, u, t);
     if (!on_grid(field_, p)) break;
     q[m] = (height_at(s, p) - options_.curvature.drop(t) - h0) / t;
     if (q[m] > q[steepest]) steepest = m;

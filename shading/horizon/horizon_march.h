@@ -123,6 +123,11 @@ class HorizonMarcher {
   // on the grid. Thread-safe. early_exit false: every step (tests of the exit).
   // steps_marched, if given, receives the steps read.
   double max_elevation(int i, int j, Heading u, bool early_exit = true, int* steps_marched = nullptr) const;
+  // Offset marching (seed 000 §4.1, "height field cast shadows"): the same march from a
+  // point off the texel centres, at height h0 (m) instead of the ground's, e.g. an
+  // aircraft's sphere centre; `origin` in level-0 texels, on the grid.
+  double max_elevation_from(GridPoint origin, double h0, Heading u, bool early_exit = true,
+                            int* steps_marched = nullptr) const;
 
   int steps() const { return static_cast<int>(schedule_.distances.size()); }
   double distance(int s) const { return schedule_.distances[s]; }  // t_s (m)

@@ -28,10 +28,14 @@ struct GridPoint {
 
 // For geographic DEMs dx varies by row: the east offset uses dx at the ray's
 // mid-row, which keeps the metric length of the offset within O((Δdx)²).
-inline GridPoint ray_point(const terrain::HeightField& f, int i, int j, Heading u, double t) {
-  const double y = j - t * u.north / f.dy;
-  const double x = i + t * u.east / dx_at_row(f, 0.5 * (j + y));
+// From any point of the grid (fractional texels): offset marching starts above one.
+inline GridPoint ray_point(const terrain::HeightField& f, GridPoint origin, Heading u, double t) {
+  const double y = origin.y - t * u.north / f.dy;
+  const double x = origin.x + t * u.east / dx_at_row(f, 0.5 * (origin.y + y));
   return {x, y};
+}
+inline GridPoint ray_point(const terrain::HeightField& f, int i, int j, Heading u, double t) {
+  return ray_point(f, GridPoint{static_cast<double>(i), static_cast<double>(j)}, u, t);
 }
 
 // Tolerance (texels) for a sample on the grid's last row/column: a few float ulps of

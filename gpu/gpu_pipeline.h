@@ -24,6 +24,8 @@
 //     plus the sun DNI·max(n·s, 0)·shadow;
 //  4. host: read-back; shaded gets albedo, exposure (lit: lighting.h's tone map) and
 //     shading::srgb_code_value.
+// A blocked pipeline (sphere blockers, gpu/gpu_blockers.h) adds blocker_sun.comp after
+// stage 0 and the spheres' sky change to stage 3 (surface_products.comp BLOCKERS).
 //
 // Edge rules (exact-zero cardinal headings, samples within edge_epsilon_texels of the
 // last row/column count) are the CPU reference's, from shading/horizon/horizon_ray.h.

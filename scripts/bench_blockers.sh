@@ -4,7 +4,7 @@
 # relief) with no aircraft, one and ten 30-sphere airliners (data/aircraft/airliner.json)
 # ~150 m above the ground, on BACKEND (gpu: the GLSL path, llvmpipe without a GPU;
 # reference: the CPU), against gdaldem hillshade; and a `shadow` replay of the sample
-# glider track. Usage: scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
+# glider track. Usage: [PRODUCTS="shaded shadow"] [NO_REPLAY=1] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
 # build. Prints best and median wall time over RUNS per command.
 set -euo pipefail
 size=${1:-1024}
@@ -35,21 +35,9 @@ write("one", [(400000 + mid, 5200000 - mid, 610)])
 write("ten", [(400000 + mid * (0.4 + 0.12 * k), 5200000 - mid * (0.5 + 0.1 * (k % 4)), 600 + 5 * k) for k in range(10)])
 PY
 
-time_runs() {  # label, command...: best and median wall seconds over $runs runs
-  local label=$1; shift
-  local times=()
-  for ((r = 0; r < runs; ++r)); do
-    local t0 t1
-    t0=$(date +%s.%N)
-    "$@" >/dev/null 2>&1 || { echo "$label: FAILED"; return 0; }
-    t1=$(date +%s.%N)
-    times+=("$(echo "$t1 - $t0" | bc)")
-  done
-  printf '%s\n' "${times[@]}" | sort -n | awk -v l="$label" '{a[NR]=$1} END {printf "%-52s best %7.2f s  median %7.2f s\n", l, a[1], a[int((NR+1)/2)]}'
-}
+. "$here/scripts/bench_common.sh"
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "flags: $(grep -m1 flags /proc/cpuinfo | grep -o -w -E 'avx2|avx512f|fma' | sort -u | xargs)"
+print_machine
 "$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p shaded --backend "$backend" --spheres "$tmp/one.csv" 2>&1 |
   tr '\r' '\n' | grep 'computed on' || true
 time_runs "gdaldem hillshade ${size}²" gdaldem hillshade -q "$tmp/dem.tif" "$tmp/gd.tif"

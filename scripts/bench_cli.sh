@@ -13,20 +13,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$skylit" scene -o "$tmp/dem.tif" --size "$size" -q
 
-time_runs() {  # label, command...: best and median wall seconds over $runs runs
-  local label=$1; shift
-  local times=()
-  for ((r = 0; r < runs; ++r)); do
-    local t0 t1
-    t0=$(date +%s.%N)
-    "$@" >/dev/null 2>&1
-    t1=$(date +%s.%N)
-    times+=("$(echo "$t1 - $t0" | bc)")
-  done
-  printf '%s\n' "${times[@]}" | sort -n | awk -v l="$label" '{a[NR]=$1} END {printf "%-60s best %6.2f s  median %6.2f s\n", l, a[1], a[int((NR+1)/2)]}'
-}
+. "$here/scripts/bench_common.sh"
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
+print_machine
 "$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p svf --azimuths 1 2>&1 | tr '\r' '\n' | grep 'computed on' || true
 time_runs "skylit shade ${size}² -p shaded (default quality, auto backend)" \
   "$skylit" shade "$tmp/dem.tif" -o "$tmp/shaded.png" -p shaded -q --overwrite

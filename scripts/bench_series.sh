@@ -19,21 +19,9 @@ trap 'rm -rf "$tmp"' EXIT
 day=2026-06-21
 series="${day}T04:00Z/${day}T15:30Z/PT30M"  # 24 frames (the scene at 7.9° E: 04:32–16:02 local mean time)
 
-time_runs() {  # label, command...: best and median wall seconds over $n runs (default $runs)
-  local label=$1; shift
-  local times=()
-  for ((r = 0; r < ${n:-$runs}; ++r)); do
-    local t0 t1
-    t0=$(date +%s.%N)
-    "$@" >/dev/null 2>&1 || { echo "$label: FAILED"; return 0; }
-    t1=$(date +%s.%N)
-    times+=("$(echo "$t1 - $t0" | bc)")
-  done
-  printf '%s\n' "${times[@]}" | sort -n | awk -v l="$label" '{a[NR]=$1} END {printf "%-64s best %7.2f s  median %7.2f s\n", l, a[1], a[int((NR+1)/2)]}'
-}
+. "$here/scripts/bench_common.sh"
 
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "flags: $(grep -m1 flags /proc/cpuinfo | grep -o -w -E 'avx2|avx512f|fma' | sort -u | xargs)"
+print_machine
 "$skylit" shade "$tmp/dem.tif" -o "$tmp/probe.tif" -p svf --azimuths 1 2>&1 | tr '\r' '\n' | grep 'computed on' || true
 time_runs "gdaldem hillshade -multidirectional ${size}² (PNG)" \
   gdaldem hillshade -multidirectional -q -of PNG "$tmp/dem.tif" "$tmp/gd.png"

@@ -69,8 +69,12 @@ void expect_consistent(const json& t) {
   EXPECT_GE(sky, frac - 1e-12) << t;  // cos²σ ≥ 1 − sin σ for σ ∈ [0, π/2]
   const double margin = t["sun_elevation_deg"].get<double>() - t["sun_horizon_deg"].get<double>();
   EXPECT_EQ(t["in_terrain_shadow"].get<bool>(), margin < 0) << t;
-  if (margin > 0.27) EXPECT_EQ(sun, 1.0) << t;  // the disc's radius is 0.267°
-  if (margin < -0.27) EXPECT_EQ(sun, 0.0) << t;
+  if (margin > 0.27) {  // the disc's radius is 0.267°
+    EXPECT_EQ(sun, 1.0) << t;
+  }
+  if (margin < -0.27) {
+    EXPECT_EQ(sun, 0.0) << t;
+  }
   EXPECT_TRUE(t["inside_dem"].get<bool>());
   EXPECT_FALSE(t["below_ground"].get<bool>());
 }

@@ -7,14 +7,18 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 namespace skylit::gpu {
 namespace {
 
-// Offsets (counting from the first index) then indices, as sphere_blockers.glsl reads them.
-std::vector<std::uint32_t> packed(const blockers::SphereBins::Flat& flat) {
-  std::vector<std::uint32_t> out(flat.offsets);
+// Offsets (counting from the first index) then indices, as sphere_blockers.glsl reads
+// them: floats, exact below 2^24.
+std::vector<float> packed(const blockers::SphereBins::Flat& flat) {
+  if (flat.offsets.back() + flat.offsets.size() >= (std::size_t{1} << 24))
+    throw std::runtime_error("GPU sphere blockers: over 2^24 binned spheres in one frame");
+  std::vector<float> out(flat.offsets.begin(), flat.offsets.end());
   out.insert(out.end(), flat.indices.begin(), flat.indices.end());
   return out;
 }
@@ -37,19 +41,21 @@ std::optional<std::string> gpu_lacks_blockers(shading::Product product, const sh
 
 void add_blocker_defines(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky,
                          GlslDefines& d) {
-  d.set("SPHERES_BINDING", bindings.spheres)
-      .set("SKY_BINS_BINDING", bindings.sky_bins)
-      .set("SUN_BINS_BINDING", bindings.sun_bins)
+  d.set("SPHERES_UNIT", bindings.spheres)
+      .set("SKY_BINS_UNIT", bindings.sky_bins)
+      .set("SUN_BINS_UNIT", bindings.sun_bins)
       .set("BIN_TEXELS", blockers::kBinTexels)
       .set("DISC_UNION_SAMPLES", blockers::kDiscUnionSamples)
       .set("DISC_RADIUS", shading::sun_shadow_options(options).radius);
-  if (sky) d.set("CAP_LOG_BINDING", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
+  if (sky) d.set("CAP_LOG_UNIT", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
 }
 
 GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky)
-    : bindings_(bindings), spheres_(sizeof(float) * 4), sky_bins_(sizeof(std::uint32_t)), sun_bins_(sizeof(std::uint32_t)),
-      cap_log_(sizeof(float)) {
-  if (!sky) return;
+    : bindings_(bindings), cap_log_(sizeof(float)) {
+  if (!sky) {
+    cap_log_tex_ = BufferTexture(cap_log_);
+    return;
+  }
   const int order = options.shaded.sh_order;
   const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
   std::vector<float> values;
@@ -58,6 +64,7 @@ GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBi
       values.push_back(static_cast<float>(std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)) *
                                           table.values()[static_cast<std::size_t>(e) * order + l]));
   cap_log_ = Buffer::from(std::span<const float>(values));
+  cap_log_tex_ = BufferTexture(cap_log_);
 }
 
 std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
@@ -67,27 +74,37 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
   for (const blockers::Sphere& s : spheres)
     for (double v : {s.centre.x, s.centre.y, s.centre.z, s.radius}) packed_spheres.push_back(static_cast<float>(v));
   if (packed_spheres.empty()) packed_spheres.assign(4, 0.0f);  // GL wants non-empty buffers
-  const std::vector<std::uint32_t> sky = packed(bins.flat_sky()), sun = packed(bins.flat_sun());
+  const std::vector<float> sky = packed(bins.flat_sky()), sun = packed(bins.flat_sun());
+  spheres_tex_ = BufferTexture();  // the views go before their buffers
+  sky_bins_tex_ = BufferTexture();
+  sun_bins_tex_ = BufferTexture();
   spheres_ = Buffer::from(std::span<const float>(packed_spheres));
-  sky_bins_ = Buffer::from(std::span<const std::uint32_t>(sky));
-  sun_bins_ = Buffer::from(std::span<const std::uint32_t>(sun));
+  sky_bins_ = Buffer::from(std::span<const float>(sky));
+  sun_bins_ = Buffer::from(std::span<const float>(sun));
+  spheres_tex_ = BufferTexture(spheres_, TextureFormat::RGBA32F);
+  sky_bins_tex_ = BufferTexture(sky_bins_);
+  sun_bins_tex_ = BufferTexture(sun_bins_);
   tiles_x_ = bins.tiles_x();
   tiles_ = bins.tiles_x() * bins.tiles_y();
-  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres.size());
-  min_cap_solid_angle_ = blockers::min_cap_solid_angle(options.shaded.sh_order, blocking.blocker);
+  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres);
+  // Per sphere: this times r² (sphere_blocker.h's cull_error_per_area), or a constant.
+  const blockers::BlockerOptions& b = blocking.blocker;
+  min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;
+  min_cap_solid_angle_ = b.cull_error_per_area > 0.0 ? 0.0 : blockers::min_cap_solid_angle(options.shaded.sh_order, b, 0.0);
   ratio_attenuation_ = blocking.blocker.ratio_attenuation;
   return spheres_.size_bytes() + sky_bins_.size_bytes() + sun_bins_.size_bytes();
 }
 
 void GpuBlockers::bind(const ComputeProgram& p) const {
-  spheres_.bind_storage(bindings_.spheres);
-  sky_bins_.bind_storage(bindings_.sky_bins);
-  sun_bins_.bind_storage(bindings_.sun_bins);
-  cap_log_.bind_storage(bindings_.cap_log);
-  p.set_uniform("bin_tiles_x", tiles_x_);
-  p.set_uniform("bin_tiles", tiles_);
+  spheres_tex_.bind_sampler(bindings_.spheres);
+  sky_bins_tex_.bind_sampler(bindings_.sky_bins);
+  sun_bins_tex_.bind_sampler(bindings_.sun_bins);
+  cap_log_tex_.bind_sampler(bindings_.cap_log);
+  if (p.has_uniform("bin_tiles_x")) p.set_uniform("bin_tiles_x", tiles_x_);
+  if (p.has_uniform("bin_tiles")) p.set_uniform("bin_tiles", tiles_);
   if (p.has_uniform("min_cap_solid_angle"))
     p.set_uniform("min_cap_solid_angle", static_cast<float>(min_cap_solid_angle_));
+  if (p.has_uniform("min_cap_per_area")) p.set_uniform("min_cap_per_area", static_cast<float>(min_cap_per_area_));
   if (p.has_uniform("ratio_attenuation")) p.set_uniform("ratio_attenuation", ratio_attenuation_ ? 1.0f : 0.0f);
 }
 

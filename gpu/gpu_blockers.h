@@ -1,6 +1,6 @@
 // Sphere blockers on the GPU (shaders/sphere_blockers.glsl, blocker_sun.comp): the
-// defines the kernels bake in, and per frame the spheres and their bins as storage
-// buffers. The bins are the reference's (shading::frame_bins), so a texel tests the
+// defines the kernels bake in, and per frame the spheres and their bins as buffer
+// textures. The bins are the reference's (shading::frame_bins), so a texel tests the
 // same spheres on both backends; they are made on the host, which takes microseconds
 // for an aircraft (a sphere adds itself to the tiles its reach covers).
 #pragma once
@@ -17,6 +17,7 @@
 
 namespace skylit::gpu {
 
+// Texture units of the buffer textures.
 struct BlockerBindings {
   int spheres = 0, sky_bins = 0, sun_bins = 0, cap_log = 0;
 };
@@ -46,8 +47,9 @@ class GpuBlockers {
  private:
   BlockerBindings bindings_;
   Buffer spheres_, sky_bins_, sun_bins_, cap_log_;
+  BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_;
   int tiles_x_ = 0, tiles_ = 0;
-  double min_cap_solid_angle_ = 0.0;
+  double min_cap_solid_angle_ = 0.0, min_cap_per_area_ = 0.0;
   bool ratio_attenuation_ = false;
 };
 

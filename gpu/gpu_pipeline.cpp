@@ -61,13 +61,12 @@ enum Binding : int {
   kCoarseSigma = 14,
   kGamma = 15,
   kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
-  kSpheres = 17,  // sphere blockers (sphere_blockers.glsl)
-  kSkyBins = 18,
-  kSunBins = 19,
-  kCapLog = 20,
 };
 
-constexpr BlockerBindings kBlockerBindings{kSpheres, kSkyBins, kSunBins, kCapLog};
+// Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
+// from the units the kernels' other samplers use (kHeights, kRowDx, kSigma, kCoeffs,
+// kFar, kTable).
+constexpr BlockerBindings kBlockerBindings{4, 5, 6, 7};
 
 // Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
 // block size): k_v = 16 over a 16384² grid's diagonal needs 234.

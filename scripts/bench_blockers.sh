@@ -4,7 +4,7 @@
 # relief) with no aircraft, one and ten 30-sphere airliners (data/aircraft/airliner.json)
 # ~150 m above the ground, on BACKEND (gpu: the GLSL path, llvmpipe without a GPU;
 # reference: the CPU), against gdaldem hillshade; and a `shadow` replay of the sample
-# glider track. Usage: [PRODUCTS="shaded shadow"] [NO_REPLAY=1] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
+# glider track. Usage: [PRODUCTS="shaded shadow"] [NO_REPLAY=1] [WORK=DIR] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
 # build. Prints best and median wall time over RUNS per command.
 set -euo pipefail
 size=${1:-1024}
@@ -12,8 +12,13 @@ runs=${2:-3}
 backend=${3:-gpu}
 here=$(cd "$(dirname "$0")/.." && pwd)
 skylit="$here/build/bin/skylit"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+if [ -n "${WORK:-}" ]; then  # keep the DEM and sphere files there
+  tmp=$WORK
+  mkdir -p "$tmp"
+else
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+fi
 "$skylit" scene -o "$tmp/scene.tif" --size "$size" -q
 # 1 m texels, heights 400–460 m, the origin kept (UTM 32N 400000 E, 5200000 N).
 gdal_translate -q -scale 400 2200 400 460 -ot Float32 -a_ullr 400000 5200000 $((400000 + size)) $((5200000 - size)) \

@@ -319,7 +319,7 @@ void main() {
   // The change of the visibility where a sphere survives, shaded by the uniform sky's table.
   float f[SH_COEFFS], vis[SH_COEFFS], highest;
   if (skyBinned(i, j)) terrainVisibility(i, j, n, vis, highest);
-  if (skyBinned(i, j) && sphereLogVisibility(i, j, n, atan(highest), f) > 0) {
+  if (skyBinned(i, j) && sphereLogVisibility(i, j, n, highest, f) > 0) {
     float blocked[SH_COEFFS];
     blocked = vis;
     applySpheres(f, blocked);
@@ -350,7 +350,7 @@ void main() {
 #endif
 #if BLOCKERS
   float f[SH_COEFFS];
-  if (sphereLogVisibility(i, j, n, atan(highest), f) > 0) applySpheres(f, vis);
+  if (sphereLogVisibility(i, j, n, highest, f) > 0) applySpheres(f, vis);
 #endif
   // log-brdf: vis holds the log-visibility.
 #if SHADING_MODE != MODE_TABLE && (!LIT || HAS_SKY)

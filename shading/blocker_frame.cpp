@@ -21,24 +21,30 @@ std::optional<glm::dvec3> sun_of(const ProductOptions& options) {
 
 blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field) {
   blockers::ReceiverGrid g{field.width, field.height, 0.0, field.dy, 0.0, 0.0};
-  for (double dx : field.dx_per_row) g.dx = std::max(g.dx, dx);
+  g.dx_min = field.dx_per_row.empty() ? 0.0 : field.dx_per_row.front();
+  for (double dx : field.dx_per_row) {
+    g.dx = std::max(g.dx, dx);
+    g.dx_min = std::min(g.dx_min, dx);
+  }
   const auto [lo, hi] = std::minmax_element(field.heights.begin(), field.heights.end());
   g.z_min = *lo;
   g.z_max = *hi;
   return g;
 }
 
-blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::size_t spheres) {
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres) {
   blockers::SkyBlockingOptions b = options.blockers;
   if (options.exact) b.blocker.cull_error = kTruthCullError;
-  b.blocker.cull_error /= static_cast<double>(std::max<std::size_t>(spheres, 1));
+  double area = 0.0;
+  for (const blockers::Sphere& s : spheres) area += s.radius * s.radius;
+  if (area > 0.0) b.blocker.cull_error_per_area = b.blocker.cull_error / area;
   return b;
 }
 
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                                 const ProductOptions& options) {
   return blockers::SphereBins(spheres, receiver_grid(field), options.shaded.sh_order,
-                              frame_blocking(options, spheres.size()).blocker, sun_of(options),
+                              frame_blocking(options, spheres).blocker, sun_of(options),
                               sun_shadow_options(options).radius);
 }
 
@@ -47,7 +53,7 @@ BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const bl
     : field_(field),
       spheres_(spheres),
       options_(options),
-      blocking_(frame_blocking(options, spheres.size())),
+      blocking_(frame_blocking(options, spheres)),
       disc_radius_(sun_shadow_options(options).radius),
       bins_(frame_bins(field, spheres, options)) {
   blockers::validate(options.blockers.blocker);

@@ -24,9 +24,9 @@ inline constexpr int kTruthDiscSamples = 4096;
 
 // The receivers of a field for sphere bins (its texels, their spacing and height range).
 blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field);
-// The blocker options of a frame of `spheres` spheres: the cull error shared among them
-// (the truth's with ProductOptions::exact).
-blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::size_t spheres);
+// The blocker options of a frame with these spheres: the cull error (the truth's with
+// ProductOptions::exact) shared among them in proportion to their areas r².
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres);
 // The spheres binned over the field's texels for a frame (the GPU uploads the same).
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                                 const ProductOptions& options);

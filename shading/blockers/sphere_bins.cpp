@@ -8,7 +8,7 @@
 namespace skylit::blockers {
 
 double sky_reach(double radius, int order, const BlockerOptions& options) {
-  const double omega = min_cap_solid_angle(order, options);
+  const double omega = min_cap_solid_angle(order, options, radius);
   if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
   // Ω(α) = 2π(1 − cos α) = omega at the reach.
   const double cos_a = 1.0 - omega / (2.0 * std::numbers::pi);
@@ -33,7 +33,7 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid
       add(sky_, k, -inf, inf, -inf, inf);
     } else if (above < reach) {
       const double rho = std::sqrt(reach * reach - above * above);
-      add(sky_, k, s.centre.x - rho, s.centre.x + rho, s.centre.y - rho, s.centre.y + rho);
+      add(sky_, k, s.centre.x - rho, s.centre.x + rho, s.centre.y - rho, s.centre.y + rho, s.centre.x, s.centre.y, rho);
     }
     // Sun: receivers at heights [z_min − r, z_max + r] whose ray toward the sun can pass
     // within r of the centre (plus the penumbra's spread over the distance).
@@ -50,18 +50,30 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid
   }
 }
 
-void SphereBins::add(Lists& l, std::uint32_t s, double x0, double x1, double y0, double y1) {
-  // Texel i covers x ∈ [(i − ½)dx, (i + ½)dx]; row j covers y ∈ [−(j + ½)dy, −(j − ½)dy].
+void SphereBins::add(Lists& l, std::uint32_t s, double x0, double x1, double y0, double y1, double cx, double cy,
+                     double rho) {
+  // Texel i of row j covers x ∈ [(i − ½)dx_j, (i + ½)dx_j], dx_j ∈ [dx_min, dx]; row j
+  // covers y ∈ [−(j + ½)dy, −(j − ½)dy].
   auto clamp_index = [](double v, int n) {
     if (!(v > 0.0)) return 0;  // also −∞ and NaN
     return v >= n - 1 ? n - 1 : static_cast<int>(v);
   };
-  if (x1 < -0.5 * grid_.dx || x0 > (grid_.width - 0.5) * grid_.dx) return;
+  const double dx_hi = grid_.dx, dx_lo = grid_.dx_min > 0.0 ? grid_.dx_min : grid_.dx;
+  if (x1 < -0.5 * dx_hi || x0 > (grid_.width - 0.5) * dx_hi) return;
   if (-y0 < -0.5 * grid_.dy || -y1 > (grid_.height - 0.5) * grid_.dy) return;
-  const int i0 = clamp_index(x0 / grid_.dx + 0.5, grid_.width), i1 = clamp_index(x1 / grid_.dx + 0.5, grid_.width);
+  // Texels whose x may lie in [x0, x1] on some row (x ≥ 0: the widest rows first).
+  const int i0 = clamp_index(x0 / dx_hi + 0.5, grid_.width), i1 = clamp_index(x1 / dx_lo + 0.5, grid_.width);
   const int j0 = clamp_index(-y1 / grid_.dy + 0.5, grid_.height), j1 = clamp_index(-y0 / grid_.dy + 0.5, grid_.height);
   for (int ty = j0 / kBinTexels; ty <= j1 / kBinTexels; ++ty)
-    for (int tx = i0 / kBinTexels; tx <= i1 / kBinTexels; ++tx) l[static_cast<std::size_t>(ty) * tiles_x_ + tx].push_back(s);
+    for (int tx = i0 / kBinTexels; tx <= i1 / kBinTexels; ++tx) {
+      if (rho >= 0.0) {  // the tile's extent against the disc: its nearest point
+        const double tx0 = (tx * kBinTexels - 0.5) * dx_lo, tx1 = ((tx + 1) * kBinTexels - 0.5) * dx_hi;
+        const double ty1 = -(ty * kBinTexels - 0.5) * grid_.dy, ty0 = -((ty + 1) * kBinTexels - 0.5) * grid_.dy;
+        const double ex = std::max({tx0 - cx, 0.0, cx - tx1}), ey = std::max({ty0 - cy, 0.0, cy - ty1});
+        if (ex * ex + ey * ey > rho * rho) continue;
+      }
+      l[static_cast<std::size_t>(ty) * tiles_x_ + tx].push_back(s);
+    }
 }
 
 int SphereBins::busy(const Lists& l) {

@@ -15,12 +15,13 @@
 
 namespace skylit::blockers {
 
-// The receivers: texel (i, j) is at (i·dx, −j·dy) with a height in [z_min, z_max]
-// (dx the largest east–west spacing of the grid, which bounds every row's).
+// The receivers: texel (i, j) is at (i·dx_j, −j·dy) with a height in [z_min, z_max],
+// dx_j in [dx_min, dx] (the rows' east–west spacings: one value on projected grids).
 struct ReceiverGrid {
   int width = 0, height = 0;
   double dx = 1.0, dy = 1.0;
   double z_min = 0.0, z_max = 0.0;
+  double dx_min = 0.0;  // 0: dx
 };
 
 inline constexpr int kBinTexels = 16;  // tile edge, texels
@@ -54,8 +55,10 @@ class SphereBins {
   }
   static int busy(const Lists& l);
   static Flat flatten(const Lists& l);
-  // Adds sphere s to every tile meeting the box [x0, x1] × [y0, y1] (field metres).
-  void add(Lists& l, std::uint32_t s, double x0, double x1, double y0, double y1);
+  // Adds sphere s to every tile meeting the box [x0, x1] × [y0, y1] (field metres) and,
+  // with rho, the disc of that radius about (cx, cy).
+  void add(Lists& l, std::uint32_t s, double x0, double x1, double y0, double y1, double cx = 0.0, double cy = 0.0,
+           double rho = -1.0);
 
   ReceiverGrid grid_;
   int tiles_x_ = 0, tiles_y_ = 0;

@@ -1,0 +1,105 @@
+// Sphere bins (shading/blockers/sphere_bins.h) are conservative: every texel whose sky a
+// sphere survives the size cull for, or whose sun ray passes within the sphere's reach,
+// lies in a tile listing it — checked by brute force over every texel and sphere, on a
+// projected grid and on rows of unequal spacing (a geographic DEM). And the frame's
+// budget (shading/blocker_frame.h) is shared in proportion to the spheres' areas, so the
+// culled spheres' bounds add up to it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "shading/blocker_frame.h"
+#include "shading/reference_pipeline.h"
+#include "shading/blockers/disc_occlusion.h"
+#include "shading/blockers/sphere_bins.h"
+#include "shading/sh/zonal.h"
+#include "terrain/synthetic.h"
+
+namespace skylit::blockers {
+namespace {
+
+bool listed(std::span<const std::uint32_t> list, std::uint32_t k) {
+  return std::find(list.begin(), list.end(), k) != list.end();
+}
+
+terrain::HeightField field(bool geographic) {
+  terrain::SyntheticOptions o;
+  o.width = 160;
+  o.height = 130;
+  o.spacing = 3.0;
+  o.relief = 40.0;
+  o.feature_size = 200.0;
+  terrain::HeightField f = terrain::make_synthetic_terrain(o);
+  if (geographic)  // rows narrowing northward, as on a lat/lon grid
+    for (int j = 0; j < f.height; ++j) f.dx_per_row[j] = 3.0 * (0.6 + 0.4 * j / (f.height - 1.0));
+  return f;
+}
+
+TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (bool geographic : {false, true}) {
+    const terrain::HeightField f = field(geographic);
+    const double top = *std::max_element(f.heights.begin(), f.heights.end());
+    std::vector<Sphere> spheres;
+    for (int k = 0; k < 12; ++k)
+      spheres.push_back({{u(rng) * 500 - 20, -(u(rng) * 400 - 20), top + 10 + u(rng) * 60}, 1.0 + 3.0 * u(rng)});
+    shading::ProductOptions o;
+    o.blockers.blocker.cull_error = 0.02;  // reaches of tens of metres: some tiles list nothing
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.4, -0.3, 0.6));
+    shading::LightingRequest r;
+    o.lighting = shading::resolve_lighting(r, std::nullopt).lighting;
+    o.lighting->sun.direction = sun;
+    const SphereBins bins = shading::frame_bins(f, spheres, o);
+    const BlockerOptions blocking = shading::frame_blocking(o, spheres).blocker;
+    const double disc = shading::sun_shadow_options(o).radius;
+    int sky_pairs = 0, sun_pairs = 0;
+    for (int j = 0; j < f.height; ++j)
+      for (int i = 0; i < f.width; ++i) {
+        const glm::dvec3 p(i * f.dx(j), -j * f.dy, f.at(i, j));
+        for (std::uint32_t k = 0; k < spheres.size(); ++k) {
+          const Sphere& s = spheres[k];
+          const double omega = sh::cap_solid_angle(sphere_cap_cos(s.radius, glm::length(s.centre - p)));
+          if (omega >= min_cap_solid_angle(o.shaded.sh_order, blocking, s.radius)) {
+            ++sky_pairs;
+            EXPECT_TRUE(listed(bins.sky(i, j), k)) << geographic << " sky " << i << "," << j << " sphere " << k;
+          }
+          // The sun: any ray of the disc (its axis widened by the disc radius) meeting the sphere.
+          const Sphere grown{s.centre, s.radius + glm::length(s.centre - p) * std::tan(disc)};
+          if (ray_hits_sphere(grown, p, sun)) {
+            ++sun_pairs;
+            EXPECT_TRUE(listed(bins.sun(i, j), k)) << geographic << " sun " << i << "," << j << " sphere " << k;
+          }
+        }
+      }
+    std::printf("%s: %d sky and %d sun pairs, %d of %d tiles list a sky sphere\n", geographic ? "geographic" : "projected",
+                sky_pairs, sun_pairs, bins.sky_tiles(), bins.tiles_x() * bins.tiles_y());
+    EXPECT_GT(sky_pairs, 1000) << geographic;
+    EXPECT_GT(sun_pairs, 20) << geographic;
+    // Bins are not the whole field: the disc of reach, not every tile.
+    EXPECT_LT(bins.sky_tiles(), bins.tiles_x() * bins.tiles_y()) << geographic;
+  }
+}
+
+TEST(SphereBins, TheBudgetIsSharedInProportionToArea) {
+  const std::vector<Sphere> spheres{{{0, 0, 100}, 1.0}, {{5, 0, 100}, 2.0}, {{10, 0, 100}, 0.5}};
+  shading::ProductOptions o;
+  o.blockers.blocker.cull_error = 2e-3;
+  const BlockerOptions b = shading::frame_blocking(o, spheres).blocker;
+  double total = 0.0;
+  for (const Sphere& s : spheres) total += sphere_cull_error(b, s.radius);
+  EXPECT_NEAR(total, 2e-3, 1e-15);
+  // Equal reach: the size cull's distance r/sin a at Ω_min is the same for every sphere.
+  const auto reach = [&](double r) { return sky_reach(r, o.shaded.sh_order, b); };
+  EXPECT_NEAR(reach(1.0), reach(2.0), 1e-3 * reach(1.0));
+  EXPECT_NEAR(reach(0.5), reach(2.0), 1e-3 * reach(1.0));
+}
+
+}  // namespace
+}  // namespace skylit::blockers

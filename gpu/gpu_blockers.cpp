@@ -47,7 +47,11 @@ void add_blocker_defines(const shading::ProductOptions& options, const BlockerBi
       .set("BIN_TEXELS", blockers::kBinTexels)
       .set("DISC_UNION_SAMPLES", blockers::kDiscUnionSamples)
       .set("DISC_RADIUS", shading::sun_shadow_options(options).radius);
-  if (sky) d.set("CAP_LOG_UNIT", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
+  if (sky)
+    d.set("GROUPS_UNIT", bindings.groups)
+        .set("ORDER_UNIT", bindings.order)
+        .set("MERGE_SIN", options.blockers.merge_sin)
+        .set("CAP_LOG_UNIT", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
 }
 
 GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky)
@@ -69,7 +73,16 @@ GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBi
 
 std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                                 const shading::ProductOptions& options) {
-  const blockers::SphereBins bins = shading::frame_bins(field, spheres, options);
+  const blockers::SphereGroups groups = blockers::group_spheres(spheres);
+  const blockers::SphereBins bins = shading::frame_bins(field, spheres, groups, options);
+  // Per group two texels: (centre, bound) and (area, first, count, 0); the member order.
+  std::vector<float> packed_groups, packed_order(groups.order.begin(), groups.order.end());
+  for (const blockers::SphereGroup& g : groups.groups)
+    for (double v : {g.centre.x, g.centre.y, g.centre.z, g.bound, g.area, static_cast<double>(g.first),
+                     static_cast<double>(g.count), 0.0})
+      packed_groups.push_back(static_cast<float>(v));
+  if (packed_groups.empty()) packed_groups.assign(8, 0.0f);
+  if (packed_order.empty()) packed_order.assign(1, 0.0f);
   std::vector<float> packed_spheres;
   for (const blockers::Sphere& s : spheres)
     for (double v : {s.centre.x, s.centre.y, s.centre.z, s.radius}) packed_spheres.push_back(static_cast<float>(v));
@@ -78,6 +91,12 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
   spheres_tex_ = BufferTexture();  // the views go before their buffers
   sky_bins_tex_ = BufferTexture();
   sun_bins_tex_ = BufferTexture();
+  groups_tex_ = BufferTexture();
+  order_tex_ = BufferTexture();
+  groups_ = Buffer::from(std::span<const float>(packed_groups));
+  order_ = Buffer::from(std::span<const float>(packed_order));
+  groups_tex_ = BufferTexture(groups_, TextureFormat::RGBA32F);
+  order_tex_ = BufferTexture(order_);
   spheres_ = Buffer::from(std::span<const float>(packed_spheres));
   sky_bins_ = Buffer::from(std::span<const float>(sky));
   sun_bins_ = Buffer::from(std::span<const float>(sun));
@@ -92,7 +111,8 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
   min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;
   min_cap_solid_angle_ = b.cull_error_per_area > 0.0 ? 0.0 : blockers::min_cap_solid_angle(options.shaded.sh_order, b, 0.0);
   ratio_attenuation_ = blocking.blocker.ratio_attenuation;
-  return spheres_.size_bytes() + sky_bins_.size_bytes() + sun_bins_.size_bytes();
+  return spheres_.size_bytes() + sky_bins_.size_bytes() + sun_bins_.size_bytes() + groups_.size_bytes() +
+         order_.size_bytes();
 }
 
 void GpuBlockers::bind(const ComputeProgram& p) const {
@@ -100,6 +120,10 @@ void GpuBlockers::bind(const ComputeProgram& p) const {
   sky_bins_tex_.bind_sampler(bindings_.sky_bins);
   sun_bins_tex_.bind_sampler(bindings_.sun_bins);
   cap_log_tex_.bind_sampler(bindings_.cap_log);
+  if (groups_tex_.id()) {
+    groups_tex_.bind_sampler(bindings_.groups);
+    order_tex_.bind_sampler(bindings_.order);
+  }
   if (p.has_uniform("bin_tiles_x")) p.set_uniform("bin_tiles_x", tiles_x_);
   if (p.has_uniform("bin_tiles")) p.set_uniform("bin_tiles", tiles_);
   if (p.has_uniform("min_cap_solid_angle"))

@@ -19,7 +19,7 @@ namespace skylit::gpu {
 
 // Texture units of the buffer textures.
 struct BlockerBindings {
-  int spheres = 0, sky_bins = 0, sun_bins = 0, cap_log = 0;
+  int spheres = 0, sky_bins = 0, sun_bins = 0, cap_log = 0, groups = 0, order = 0;
 };
 
 // Why the GPU cannot shade sphere blockers in `product` with these options (it runs the
@@ -46,8 +46,8 @@ class GpuBlockers {
 
  private:
   BlockerBindings bindings_;
-  Buffer spheres_, sky_bins_, sun_bins_, cap_log_;
-  BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_;
+  Buffer spheres_, sky_bins_, sun_bins_, cap_log_, groups_, order_;
+  BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_, groups_tex_, order_tex_;
   int tiles_x_ = 0, tiles_ = 0;
   double min_cap_solid_angle_ = 0.0, min_cap_per_area_ = 0.0;
   bool ratio_attenuation_ = false;

@@ -66,7 +66,7 @@ enum Binding : int {
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
 // from the units the kernels' other samplers use (kHeights, kRowDx, kSigma, kCoeffs,
 // kFar, kTable).
-constexpr BlockerBindings kBlockerBindings{4, 5, 6, 7};
+constexpr BlockerBindings kBlockerBindings{4, 5, 6, 7, 10, 12};
 
 // Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
 // block size): k_v = 16 over a 16384² grid's diagonal needs 234.

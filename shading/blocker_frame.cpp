@@ -42,8 +42,8 @@ blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::
 }
 
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
-                                const ProductOptions& options) {
-  return blockers::SphereBins(spheres, receiver_grid(field), options.shaded.sh_order,
+                                const blockers::SphereGroups& groups, const ProductOptions& options) {
+  return blockers::SphereBins(spheres, groups, receiver_grid(field), options.shaded.sh_order,
                               frame_blocking(options, spheres).blocker, sun_of(options),
                               sun_shadow_options(options).radius);
 }
@@ -55,7 +55,8 @@ BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const bl
       options_(options),
       blocking_(frame_blocking(options, spheres)),
       disc_radius_(sun_shadow_options(options).radius),
-      bins_(frame_bins(field, spheres, options)) {
+      groups_(blockers::group_spheres(spheres)),
+      bins_(frame_bins(field, spheres, groups_, options)) {
   blockers::validate(options.blockers.blocker);
 }
 
@@ -74,7 +75,7 @@ int BlockerFrame::sky_delta(int i, int j, const glm::dvec3& normal, std::span<co
                             std::span<const double> vis_t, std::span<const double> log_t, std::span<double> delta,
                             std::span<double> log_sum, std::span<double> scratch) const {
   const blockers::Receiver r{position(i, j), normal, sigma, vis_t, log_t};
-  return blockers::block_sky(spheres_, bins_.sky(i, j), r, blocking_, delta, log_sum, scratch);
+  return blockers::block_sky(spheres_, groups_, bins_.sky(i, j), r, blocking_, delta, log_sum, scratch);
 }
 
 Occluders BlockerFrame::occluders(int i, int j, std::span<const double> sigma, bool with_caps, double floor_at) const {
@@ -88,7 +89,10 @@ Occluders BlockerFrame::occluders(int i, int j, std::span<const double> sigma, b
   };
   if (!with_caps) return occ;
   const glm::dvec3 p = position(i, j);
-  for (std::uint32_t k : bins_.sky(i, j)) {
+  std::vector<std::uint32_t> members;  // the truth takes every sphere of a listed group
+  for (std::uint32_t g : bins_.sky(i, j))
+    for (std::uint32_t m = 0; m < groups_.groups[g].count; ++m) members.push_back(groups_.order[groups_.groups[g].first + m]);
+  for (std::uint32_t k : members) {
     const blockers::Sphere& s = spheres_[k];
     const glm::dvec3 to_c = s.centre - p;
     const double d = glm::length(to_c);

@@ -27,9 +27,10 @@ blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field);
 // The blocker options of a frame with these spheres: the cull error (the truth's with
 // ProductOptions::exact) shared among them in proportion to their areas r².
 blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres);
-// The spheres binned over the field's texels for a frame (the GPU uploads the same).
+// The spheres and their groups binned over the field's texels for a frame (the GPU
+// uploads the same).
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
-                                const ProductOptions& options);
+                                const blockers::SphereGroups& groups, const ProductOptions& options);
 
 class BlockerFrame {
  public:
@@ -68,6 +69,7 @@ class BlockerFrame {
   const ProductOptions& options_;
   blockers::SkyBlockingOptions blocking_;  // the cull error shared among the spheres
   double disc_radius_;
+  blockers::SphereGroups groups_;
   blockers::SphereBins bins_;
 };
 

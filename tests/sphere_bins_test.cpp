@@ -1,6 +1,6 @@
 // Sphere bins (shading/blockers/sphere_bins.h) are conservative: every texel whose sky a
-// sphere survives the size cull for, or whose sun ray passes within the sphere's reach,
-// lies in a tile listing it — checked by brute force over every texel and sphere, on a
+// sphere survives the size cull for lies in a tile listing its group, and every texel
+// whose sun ray passes within the sphere's reach in one listing the sphere — checked by brute force over every texel and sphere, on a
 // projected grid and on rows of unequal spacing (a geographic DEM). And the frame's
 // budget (shading/blocker_frame.h) is shared in proportion to the spheres' areas, so the
 // culled spheres' bounds add up to it.
@@ -56,7 +56,12 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
     shading::LightingRequest r;
     o.lighting = shading::resolve_lighting(r, std::nullopt).lighting;
     o.lighting->sun.direction = sun;
-    const SphereBins bins = shading::frame_bins(f, spheres, o);
+    const SphereGroups groups = group_spheres(spheres, 60.0);
+    std::vector<std::uint32_t> group_of(spheres.size());
+    for (std::uint32_t g = 0; g < groups.groups.size(); ++g)
+      for (std::uint32_t m = 0; m < groups.groups[g].count; ++m) group_of[groups.order[groups.groups[g].first + m]] = g;
+    EXPECT_LT(groups.groups.size(), spheres.size()) << "some spheres share a group";
+    const SphereBins bins = shading::frame_bins(f, spheres, groups, o);
     const BlockerOptions blocking = shading::frame_blocking(o, spheres).blocker;
     const double disc = shading::sun_shadow_options(o).radius;
     int sky_pairs = 0, sun_pairs = 0;
@@ -68,7 +73,7 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
           const double omega = sh::cap_solid_angle(sphere_cap_cos(s.radius, glm::length(s.centre - p)));
           if (omega >= min_cap_solid_angle(o.shaded.sh_order, blocking, s.radius)) {
             ++sky_pairs;
-            EXPECT_TRUE(listed(bins.sky(i, j), k)) << geographic << " sky " << i << "," << j << " sphere " << k;
+            EXPECT_TRUE(listed(bins.sky(i, j), group_of[k])) << geographic << " sky " << i << "," << j << " sphere " << k;
           }
           // The sun: any ray of the disc (its axis widened by the disc radius) meeting the sphere.
           const Sphere grown{s.centre, s.radius + glm::length(s.centre - p) * std::tan(disc)};

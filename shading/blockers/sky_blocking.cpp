@@ -36,8 +36,8 @@ bool below_horizon(const Sphere& s, const Receiver& r) {
   return top < lowest;
 }
 
-int block_sky(std::span<const Sphere> spheres, std::span<const std::uint32_t> candidates, const Receiver& r,
-              const SkyBlockingOptions& options, std::span<double> delta, std::span<double> log_sum,
+int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::span<const std::uint32_t> candidates,
+              const Receiver& r, const SkyBlockingOptions& options, std::span<double> delta, std::span<double> log_sum,
               std::span<double> scratch) {
   const std::size_t size = delta.size();
   const int order = sh::order_of(size);
@@ -47,10 +47,18 @@ int block_sky(std::span<const Sphere> spheres, std::span<const std::uint32_t> ca
   std::array<double, sh::kMaxOrder> zh{};
   const std::span<double> z(zh.data(), order);
   int kept = 0;
-  for (std::uint32_t k : candidates) {
-    const Sphere& s = spheres[k];
-    if (options.horizon_cull && below_horizon(s, r)) continue;
+  const auto add = [&](const Sphere& s, const Sphere& extent) {
+    if (glm::dot(r.normal, extent.centre - r.position) + extent.radius <= 0.0) return;  // below the tangent plane
+    if (options.horizon_cull && below_horizon(extent, r)) return;
     kept += add_log_visibility(s, r.position, r.normal, options.blocker, z, f_s) ? 1 : 0;
+  };
+  for (std::uint32_t g : candidates) {
+    const SphereGroup& group = groups.groups[g];
+    if (seen_as_one(group, glm::length(group.centre - r.position), options.merge_sin)) {
+      add(equivalent_sphere(group), {group.centre, group.bound});
+      continue;
+    }
+    for (std::uint32_t m = group.first; m < group.first + group.count; ++m) add(spheres[groups.order[m]], spheres[groups.order[m]]);
   }
   if (kept == 0) return 0;
   for (std::size_t q = 0; q < size; ++q) log_sum[q] = (r.log_t.empty() ? 0.0 : r.log_t[q]) + f_s[q];

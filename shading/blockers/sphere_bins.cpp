@@ -16,7 +16,7 @@ double sky_reach(double radius, int order, const BlockerOptions& options) {
   return radius / std::sqrt(1.0 - cos_a * cos_a);
 }
 
-SphereBins::SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid, int order,
+SphereBins::SphereBins(std::span<const Sphere> spheres, const SphereGroups& groups, const ReceiverGrid& grid, int order,
                        const BlockerOptions& options, std::optional<glm::dvec3> sun, double disc_radius)
     : grid_(grid),
       tiles_x_((grid.width + kBinTexels - 1) / kBinTexels),
@@ -24,17 +24,21 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid
       sky_(static_cast<std::size_t>(tiles_x_) * tiles_y_),
       sun_(sky_.size()) {
   const double inf = std::numeric_limits<double>::infinity();
-  for (std::uint32_t k = 0; k < spheres.size(); ++k) {
-    const Sphere& s = spheres[k];
-    // Sky: receivers within the reach; the nearest lie at height z_max.
-    const double reach = sky_reach(s.radius, order, options) + s.radius;
-    const double above = std::max(0.0, s.centre.z - grid.z_max);
+  for (std::uint32_t k = 0; k < groups.groups.size(); ++k) {
+    // Sky: receivers within the group's reach (its equivalent sphere's, about its
+    // bound: no member reaches further); the nearest lie at height z_max.
+    const SphereGroup& g = groups.groups[k];
+    const double reach = sky_reach(std::sqrt(g.area), order, options) + g.bound;
+    const double above = std::max(0.0, g.centre.z - grid.z_max);
     if (reach == inf) {
       add(sky_, k, -inf, inf, -inf, inf);
     } else if (above < reach) {
       const double rho = std::sqrt(reach * reach - above * above);
-      add(sky_, k, s.centre.x - rho, s.centre.x + rho, s.centre.y - rho, s.centre.y + rho, s.centre.x, s.centre.y, rho);
+      add(sky_, k, g.centre.x - rho, g.centre.x + rho, g.centre.y - rho, g.centre.y + rho, g.centre.x, g.centre.y, rho);
     }
+  }
+  for (std::uint32_t k = 0; k < spheres.size(); ++k) {
+    const Sphere& s = spheres[k];
     // Sun: receivers at heights [z_min − r, z_max + r] whose ray toward the sun can pass
     // within r of the centre (plus the penumbra's spread over the distance).
     if (!sun || !(sun->z > 0.0)) continue;

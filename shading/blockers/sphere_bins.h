@@ -1,10 +1,12 @@
 // Spheres binned into square tiles of receivers (DESIGN.md "Aircraft"): each tile lists
-// the spheres that can darken its sky above the error target or block its sun, so a
-// texel tests only those and the cost of an aircraft follows the ground it darkens.
+// the sphere groups (sphere_groups.h) that can darken its sky above the error target and
+// the spheres that can block its sun, so a texel tests only those and the cost of an
+// aircraft follows the ground it darkens.
 // Bins are conservative: a listed sphere may still be culled per texel.
 #pragma once
 
 #include "shading/blockers/sphere_blocker.h"
+#include "shading/blockers/sphere_groups.h"
 
 #include <glm/vec3.hpp>
 
@@ -28,14 +30,16 @@ inline constexpr int kBinTexels = 16;  // tile edge, texels
 
 class SphereBins {
  public:
-  // Sky bins from the size cull of `options` at SH order `order`; sun bins when `sun`
-  // (unit, toward the sun) is above the horizontal, for a disc of `disc_radius`.
-  SphereBins(std::span<const Sphere> spheres, const ReceiverGrid& grid, int order, const BlockerOptions& options,
-             std::optional<glm::dvec3> sun, double disc_radius);
+  // Sky bins of the groups from the size cull of `options` at SH order `order` (a group
+  // reaches as far as its members: the budget is shared by area); sun bins of the
+  // spheres when `sun` (unit, toward the sun) is above the horizontal, for a disc of
+  // `disc_radius`.
+  SphereBins(std::span<const Sphere> spheres, const SphereGroups& groups, const ReceiverGrid& grid, int order,
+             const BlockerOptions& options, std::optional<glm::dvec3> sun, double disc_radius);
 
   int tiles_x() const { return tiles_x_; }
   int tiles_y() const { return tiles_y_; }
-  // Indices into the spheres of the tile holding texel (i, j).
+  // Indices into the groups (sky) and the spheres (sun) of the tile holding texel (i, j).
   std::span<const std::uint32_t> sky(int i, int j) const { return list(sky_, i, j); }
   std::span<const std::uint32_t> sun(int i, int j) const { return list(sun_, i, j); }
   // Tiles listing at least one sphere (for reports and the GPU's tile dispatch).

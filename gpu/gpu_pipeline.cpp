@@ -59,7 +59,6 @@ enum Binding : int {
   kShadow = 12,
   kSunSchedule = 13,
   kCoarseSigma = 14,
-  kGamma = 15,
   kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
 };
 
@@ -67,6 +66,7 @@ enum Binding : int {
 // from the units the kernels' other samplers use (kHeights, kRowDx, kSigma, kCoeffs,
 // kFar, kTable).
 constexpr BlockerBindings kBlockerBindings{4, 5, 6, 7, 10, 12};
+constexpr int kGammaUnit = 13;  // Γ's buffer texture (sh_product.glsl)
 
 // Steps the march kernel's uniform step table holds (8 KiB, under GL's 16 KiB minimum
 // block size): k_v = 16 over a 16384² grid's diagonal needs 234.
@@ -482,6 +482,7 @@ struct GpuProductPipeline::Impl {
     return timer.elapsed_ms();
   }
   Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
+  BufferTexture gamma_tex;  // Γ's view (sh_product.glsl)
   BufferTexture table_tex;  // the surface kernel's view (table mode)
   int channels = 1;               // output bands of shaded/irradiance
   std::vector<double> sun_dni;    // lit: the sun's DNI per output channel
@@ -595,8 +596,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     shading::ProductOptions shading_options = options;
     if (!needs_visibility(product)) shading_options.shaded.mode = shading::ShadingMode::SkyBrdfTable;
     const Product shading_product = needs_visibility(product) ? product : Product::Shaded;
-    ShadingSetup shading = shading_setup(shading_product, shading_options, kTable, kGamma, prod);
-    if (blocked) add_blocker_shading(shading_options, kGamma, shading, prod);
+    ShadingSetup shading = shading_setup(shading_product, shading_options, kTable, kGammaUnit, prod);
+    if (blocked) add_blocker_shading(shading_options, kGammaUnit, shading, prod);
     k.channels = shading.channels;
     k.sun_dni = shading.sun_dni;
     if (lit) {
@@ -614,7 +615,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set_literal("WEDGE_FOURIER", glsl_float_array_literal(wedge_fourier_matrix(op)));
     k.vis_rows = op.rows();
     k.table = Buffer::from(std::span<const float>(shading.sky));
-    k.gamma = Buffer::from(std::span<const std::uint32_t>(shading.gamma));
+    k.gamma = Buffer::from(std::span<const float>(shading.gamma));
+    k.gamma_tex = BufferTexture(k.gamma, TextureFormat::RGBA32F);
     if (shading_options.shaded.mode == shading::ShadingMode::SkyBrdfTable)
       k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
@@ -652,7 +654,7 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
   k.blocker_sun_dir = glm::vec3(lighting.sun.direction);
   if (!needs_visibility(mProduct)) return;
   GlslDefines unused;  // the kernels' defines are the same (same_baked_lighting)
-  const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGamma, unused);
+  const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGammaUnit, unused);
   k.sun_dni = shading.sun_dni;
   if (k.table.size_bytes() == shading.sky.size() * sizeof(float)) {
     k.table.upload(shading.sky.data(), k.table.size_bytes());
@@ -886,7 +888,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   if (sh_visibility(mProduct, k.blocked)) {
     k.table.bind_storage(kTable);  // the sky SH of the SH modes
     if (k.table_tex.id()) k.table_tex.bind_sampler(kTable);
-    k.gamma.bind_storage(kGamma);
+    k.gamma_tex.bind_sampler(kGammaUnit);
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);

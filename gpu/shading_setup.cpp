@@ -49,11 +49,11 @@ void set_hyb_defines(const sh::HybOptions& o, GlslDefines& d) {
 // Γ's non-zeros for GAMMA_BINDING, and the defines of sh_product.glsl and sh_exp.glsl's √(4π).
 void add_gamma(int order, int gamma_binding, ShadingSetup& out, GlslDefines& d) {
   for (const sh::TripleEntry& e : sh::triple_product(order).entries()) {
-    out.gamma.push_back(static_cast<std::uint32_t>(e.i | e.j << 8 | e.k << 16));
-    out.gamma.push_back(std::bit_cast<std::uint32_t>(static_cast<float>(e.value)));
+    for (double v : {static_cast<double>(e.i), static_cast<double>(e.j), static_cast<double>(e.k), e.value})
+      out.gamma.push_back(static_cast<float>(v));
   }
   d.set("GAMMA_BINDING", gamma_binding)
-      .set("GAMMA_ENTRIES", static_cast<int>(out.gamma.size() / 2))
+      .set("GAMMA_ENTRIES", static_cast<int>(out.gamma.size() / 4))
       .set("SQRT_4PI", sh::kSqrt4Pi);
 }
 
@@ -130,7 +130,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
     }
   }
   if (out.sky.empty()) out.sky.assign(4, 0.0f);  // GL wants non-empty buffers (one rgba texel)
-  if (out.gamma.empty()) out.gamma.assign(2, 0u);
+  if (out.gamma.empty()) out.gamma.assign(4, 0.0f);
   return out;
 }
 

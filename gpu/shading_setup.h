@@ -20,9 +20,9 @@ struct ShadingSetup {
   // For TABLE_BINDING: the channels' tables back to back (table mode) or the sky SH
   // [c·n² + k] (SH modes). Never empty (GL wants non-empty buffers bound).
   std::vector<float> sky;
-  // For GAMMA_BINDING (SH modes): per Γ non-zero the indices i | j << 8 | k << 16 and
-  // the value's float bits. Never empty.
-  std::vector<std::uint32_t> gamma;
+  // For GAMMA_BINDING (an RGBA32F buffer texture, SH modes and blockers): per Γ non-zero
+  // (i, j, k, value). Never empty.
+  std::vector<float> gamma;
 };
 
 // Builds the uploads and sets the shading defines of surface_products.comp (see its

@@ -2,6 +2,8 @@
 
 #include "flight/mesh_shapes.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -11,7 +13,6 @@ namespace {
 
 constexpr int kRingPoints = 24;     // around a fuselage or nacelle section
 constexpr int kChordPoints = 12;    // per airfoil side
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Half-thickness of the NACA 4-digit symmetric section at chord fraction x, for
 // thickness ratio t (the open-trailing-edge coefficient −0.1015, so the edge keeps a
@@ -65,8 +66,8 @@ std::vector<SurfaceStation> tapered_half(double semispan, double root_x_le, doub
                                          double sweep_le_deg, double dihedral_deg, double z_root, double t_root,
                                          double t_tip) {
   return {{0.0, root_x_le, root_chord, t_root, z_root},
-          {semispan, root_x_le - semispan * std::tan(sweep_le_deg * kDeg), tip_chord, t_tip,
-           z_root + semispan * std::tan(dihedral_deg * kDeg)}};
+          {semispan, root_x_le - semispan * std::tan(glm::radians(sweep_le_deg)), tip_chord, t_tip,
+           z_root + semispan * std::tan(glm::radians(dihedral_deg))}};
 }
 
 Mesh cylinder_z(double x, double y, double z0, double z1, double radius, int sides) {
@@ -92,7 +93,7 @@ Mesh light_single() {
   Mesh m = make_fuselage({{2.05, 0.12, 0.12, 0.0}, {1.75, 0.80, 0.80, 0.0}, {1.0, 1.05, 1.25, 0.05},
                           {0.0, 1.10, 1.45, 0.10}, {-1.5, 0.90, 1.20, 0.10}, {-3.5, 0.45, 0.72, 0.25},
                           {-5.8, 0.20, 0.36, 0.35}, {-6.23, 0.06, 0.12, 0.35}});
-  const double z = 0.82, dihedral = std::tan(1.73 * kDeg);
+  const double z = 0.82, dihedral = std::tan(glm::radians(1.73));
   m.append(mirrored_wing({{0.0, 0.41, 1.63, 0.12, z}, {2.5, 0.41, 1.63, 0.12, z + 2.5 * dihedral},
                           {5.5, 0.28, 1.13, 0.12, z + 5.5 * dihedral}}));
   m.append(mirrored_wing(tapered_half(1.725, -5.05, 1.20, 0.80, 12.0, 0.0, 0.35, 0.09, 0.09)));
@@ -108,8 +109,8 @@ Mesh airliner() {
   Mesh m = make_fuselage({{16.0, 0.3, 0.3, -0.3}, {15.3, 1.7, 1.7, -0.2}, {14.0, 3.3, 3.4, -0.05},
                           {12.0, 3.95, 4.10, 0.0}, {-10.0, 3.95, 4.10, 0.0}, {-15.0, 3.0, 3.4, 0.4},
                           {-19.0, 1.6, 2.0, 1.0}, {-21.57, 0.3, 0.5, 1.3}});
-  const double sweep = 27.0, dihedral = std::tan(5.0 * kDeg), x_le = 2.0, z = -1.2;
-  auto le = [&](double y) { return x_le - y * std::tan(sweep * kDeg); };
+  const double sweep = 27.0, dihedral = std::tan(glm::radians(5.0)), x_le = 2.0, z = -1.2;
+  auto le = [&](double y) { return x_le - y * std::tan(glm::radians(sweep)); };
   m.append(mirrored_wing({{0.0, x_le, 7.0, 0.15, z}, {6.3, le(6.3), 4.3, 0.13, z + 6.3 * dihedral},
                           {17.05, le(17.05), 1.5, 0.11, z + 17.05 * dihedral}}));
   m.append(mirrored_wing(tapered_half(6.225, -15.6, 3.8, 1.3, 32.0, 6.0, 0.9, 0.10, 0.10)));

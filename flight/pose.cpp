@@ -1,6 +1,7 @@
 #include "flight/pose.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -8,8 +9,7 @@
 namespace skylit::flight {
 
 glm::dmat3 body_to_enu(const Attitude& a) {
-  constexpr double kDeg = std::numbers::pi / 180.0;
-  const double psi = a.heading_deg * kDeg, theta = a.pitch_deg * kDeg, phi = a.bank_deg * kDeg;
+  const double psi = glm::radians(a.heading_deg), theta = glm::radians(a.pitch_deg), phi = glm::radians(a.bank_deg);
   const glm::dvec3 forward(std::sin(psi) * std::cos(theta), std::cos(psi) * std::cos(theta), std::sin(theta));
   const glm::dvec3 right_level(std::cos(psi), -std::sin(psi), 0.0);  // the right wing before banking
   const glm::dvec3 up_level = glm::cross(right_level, forward);

@@ -5,12 +5,12 @@
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace skylit::flight {
 namespace {
 
 constexpr double kStandardGravity = 9.80665;  // m/s², CGPM 1901
-constexpr double kDegPerRad = 180.0 / M_PI;
 
 // Difference of headings (degrees) wrapped into (−180, 180].
 double heading_difference(double to, double from) {
@@ -21,7 +21,7 @@ double heading_difference(double to, double from) {
 }
 
 double compass(glm::dvec2 d) {
-  const double h = std::atan2(d.x, d.y) * kDegPerRad;
+  const double h = glm::degrees(std::atan2(d.x, d.y));
   return h < 0.0 ? h + 360.0 : h;
 }
 
@@ -133,14 +133,14 @@ std::optional<Pose> TrackSampler::pose_at(double time_s) const {
     return pose;
   }
   pose.attitude.heading_deg = compass(m.direction);
-  pose.attitude.pitch_deg = std::atan2(m.vertical_speed, m.horizontal_speed) * kDegPerRad;
+  pose.attitude.pitch_deg = glm::degrees(std::atan2(m.vertical_speed, m.horizontal_speed));
   const double t0 = std::max(time_s - options_.window_s, fixes_[segment].time_s);
   const double t1 = std::min(time_s + options_.window_s, fixes_[segment_end_[segment]].time_s);
   if (t1 - t0 > 1e-9) {
     const auto i0 = bracket(t0), i1 = bracket(t1);
     const double turn_deg = heading_difference(heading_deg(segment, t1, i1.value_or(*i)), heading_deg(segment, t0, i0.value_or(*i)));
-    const double omega = turn_deg / kDegPerRad / (t1 - t0);
-    pose.attitude.bank_deg = std::atan(m.horizontal_speed * omega / kStandardGravity) * kDegPerRad;
+    const double omega = glm::radians(turn_deg) / (t1 - t0);
+    pose.attitude.bank_deg = glm::degrees(std::atan(m.horizontal_speed * omega / kStandardGravity));
   }
   return pose;
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace skylit::gpu {
@@ -21,6 +22,16 @@ std::vector<float> packed(const blockers::SphereBins::Flat& flat) {
   std::vector<float> out(flat.offsets.begin(), flat.offsets.end());
   out.insert(out.end(), flat.indices.begin(), flat.indices.end());
   return out;
+}
+
+// Replaces `buffer` by `values` (one zero texel when empty: GL wants non-empty buffers)
+// and `texture` by its view; the view goes first. Returns the bytes uploaded.
+std::size_t view(Buffer& buffer, BufferTexture& texture, std::vector<float> values, TextureFormat format) {
+  if (values.empty()) values.assign(format == TextureFormat::R32F ? 1 : 4, 0.0f);
+  texture = BufferTexture();
+  buffer = Buffer::from(std::span<const float>(values));
+  texture = BufferTexture(buffer, format);
+  return buffer.size_bytes();
 }
 
 }  // namespace
@@ -55,64 +66,45 @@ void add_blocker_defines(const shading::ProductOptions& options, const BlockerBi
 }
 
 GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky)
-    : bindings_(bindings), cap_log_(sizeof(float)) {
-  if (!sky) {
-    cap_log_tex_ = BufferTexture(cap_log_);
-    return;
+    : bindings_(bindings) {
+  std::vector<float> values;  // the sun alone needs no table
+  if (sky) {
+    const int order = options.shaded.sh_order;
+    const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
+    for (int e = 0; e < table.entries(); ++e)
+      for (int l = 0; l < order; ++l)  // scaled as sh::add_rotated_zh scales a ZH
+        values.push_back(static_cast<float>(std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)) *
+                                            table.values()[static_cast<std::size_t>(e) * order + l]));
   }
-  const int order = options.shaded.sh_order;
-  const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
-  std::vector<float> values;
-  for (int e = 0; e < table.entries(); ++e)
-    for (int l = 0; l < order; ++l)  // scaled as sh::add_rotated_zh scales a ZH
-      values.push_back(static_cast<float>(std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)) *
-                                          table.values()[static_cast<std::size_t>(e) * order + l]));
-  cap_log_ = Buffer::from(std::span<const float>(values));
-  cap_log_tex_ = BufferTexture(cap_log_);
+  view(cap_log_, cap_log_tex_, std::move(values), TextureFormat::R32F);
 }
 
 std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                                 const shading::ProductOptions& options) {
+  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres);
   const blockers::SphereGroups groups = blockers::group_spheres(spheres);
-  const blockers::SphereBins bins = shading::frame_bins(field, spheres, groups, options);
+  const blockers::SphereBins bins = shading::frame_bins(field, spheres, groups, blocking, options);
   // Per group two texels: (centre, bound) and (area, first, count, 0); the member order.
-  std::vector<float> packed_groups, packed_order(groups.order.begin(), groups.order.end());
+  std::vector<float> packed_groups, packed_spheres;
   for (const blockers::SphereGroup& g : groups.groups)
     for (double v : {g.centre.x, g.centre.y, g.centre.z, g.bound, g.area, static_cast<double>(g.first),
                      static_cast<double>(g.count), 0.0})
       packed_groups.push_back(static_cast<float>(v));
-  if (packed_groups.empty()) packed_groups.assign(8, 0.0f);
-  if (packed_order.empty()) packed_order.assign(1, 0.0f);
-  std::vector<float> packed_spheres;
   for (const blockers::Sphere& s : spheres)
     for (double v : {s.centre.x, s.centre.y, s.centre.z, s.radius}) packed_spheres.push_back(static_cast<float>(v));
-  if (packed_spheres.empty()) packed_spheres.assign(4, 0.0f);  // GL wants non-empty buffers
-  const std::vector<float> sky = packed(bins.flat_sky()), sun = packed(bins.flat_sun());
-  spheres_tex_ = BufferTexture();  // the views go before their buffers
-  sky_bins_tex_ = BufferTexture();
-  sun_bins_tex_ = BufferTexture();
-  groups_tex_ = BufferTexture();
-  order_tex_ = BufferTexture();
-  groups_ = Buffer::from(std::span<const float>(packed_groups));
-  order_ = Buffer::from(std::span<const float>(packed_order));
-  groups_tex_ = BufferTexture(groups_, TextureFormat::RGBA32F);
-  order_tex_ = BufferTexture(order_);
-  spheres_ = Buffer::from(std::span<const float>(packed_spheres));
-  sky_bins_ = Buffer::from(std::span<const float>(sky));
-  sun_bins_ = Buffer::from(std::span<const float>(sun));
-  spheres_tex_ = BufferTexture(spheres_, TextureFormat::RGBA32F);
-  sky_bins_tex_ = BufferTexture(sky_bins_);
-  sun_bins_tex_ = BufferTexture(sun_bins_);
+  const std::size_t bytes = view(spheres_, spheres_tex_, packed_spheres, TextureFormat::RGBA32F) +
+                            view(groups_, groups_tex_, packed_groups, TextureFormat::RGBA32F) +
+                            view(order_, order_tex_, {groups.order.begin(), groups.order.end()}, TextureFormat::R32F) +
+                            view(sky_bins_, sky_bins_tex_, packed(bins.flat_sky()), TextureFormat::R32F) +
+                            view(sun_bins_, sun_bins_tex_, packed(bins.flat_sun()), TextureFormat::R32F);
   tiles_x_ = bins.tiles_x();
   tiles_ = bins.tiles_x() * bins.tiles_y();
-  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres);
   // Per sphere: this times r² (sphere_blocker.h's cull_error_per_area), or a constant.
   const blockers::BlockerOptions& b = blocking.blocker;
   min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;
   min_cap_solid_angle_ = b.cull_error_per_area > 0.0 ? 0.0 : blockers::min_cap_solid_angle(options.shaded.sh_order, b, 0.0);
-  ratio_attenuation_ = blocking.blocker.ratio_attenuation;
-  return spheres_.size_bytes() + sky_bins_.size_bytes() + sun_bins_.size_bytes() + groups_.size_bytes() +
-         order_.size_bytes();
+  ratio_attenuation_ = b.ratio_attenuation;
+  return bytes;
 }
 
 void GpuBlockers::bind(const ComputeProgram& p) const {
@@ -120,10 +112,8 @@ void GpuBlockers::bind(const ComputeProgram& p) const {
   sky_bins_tex_.bind_sampler(bindings_.sky_bins);
   sun_bins_tex_.bind_sampler(bindings_.sun_bins);
   cap_log_tex_.bind_sampler(bindings_.cap_log);
-  if (groups_tex_.id()) {
-    groups_tex_.bind_sampler(bindings_.groups);
-    order_tex_.bind_sampler(bindings_.order);
-  }
+  groups_tex_.bind_sampler(bindings_.groups);
+  order_tex_.bind_sampler(bindings_.order);
   if (p.has_uniform("bin_tiles_x")) p.set_uniform("bin_tiles_x", tiles_x_);
   if (p.has_uniform("bin_tiles")) p.set_uniform("bin_tiles", tiles_);
   if (p.has_uniform("min_cap_solid_angle"))

@@ -461,9 +461,8 @@ struct GpuProductPipeline::Impl {
   ResidentTable schedule, sun_schedule;
   Buffer no_coeffs;  // bound in place of the pyramid without use_pyramid
   Buffer headings;
-  // Sphere blockers (blocked pipelines): the frame's spheres and bins, and
-  // blocker_sun.comp, which multiplies the sun's shadow by what they leave.
-  bool blocked = false;
+  // Sphere blockers (present in blocked pipelines only): the frame's spheres and bins,
+  // and blocker_sun.comp, which multiplies the sun's shadow by what they leave.
   std::optional<GpuBlockers> blockers;
   std::vector<blockers::Sphere> spheres;  // this frame's (set_spheres)
   std::optional<ComputeProgram> blocker_sun;
@@ -496,7 +495,6 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   blocked = blocked && shading::traits(product).blocked;
   if (blocked)
     if (const auto why = gpu_lacks_blockers(product, options)) throw std::invalid_argument(*why);
-  k.blocked = blocked;
   const bool lit = shading::uses_lighting(product, options);
   const bool sky_vis = sh_visibility(product, blocked);
   if (sun_lit(product, options) || shading::traits(product).sun_only) {
@@ -681,7 +679,7 @@ void GpuProductPipeline::set_exposure(double exposure) {
 void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
 
 void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) {
-  if (!mImpl->blocked) throw std::logic_error("GpuProductPipeline::set_spheres: the pipeline was built without blockers");
+  if (!mImpl->blockers) throw std::logic_error("GpuProductPipeline::set_spheres: the pipeline was built without blockers");
   mImpl->spheres.assign(spheres.begin(), spheres.end());
 }
 
@@ -771,8 +769,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // visibility are skipped), or (keeping) this one's, for the computes after it.
   const bool vis_product = needs_visibility(mProduct);
   // A blocked frame needs the horizons (the spheres' horizon cull): it keeps nothing.
-  const bool reuse = vis_product && !k.blocked && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
-  bool keep = vis_product && !k.blocked && !reuse && (k.keep_vis || k.frames > 0);
+  const bool reuse = vis_product && !k.blockers && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
+  bool keep = vis_product && !k.blockers && !reuse && (k.keep_vis || k.frames > 0);
   if (keep) {
     const std::size_t vis_bytes = texels * static_cast<std::size_t>(k.vis_rows) * sizeof(float);
     k.vis_valid = false;
@@ -885,7 +883,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       coeffs_tex.bind_sampler(kCoeffs);
     }
   }
-  if (sh_visibility(mProduct, k.blocked)) {
+  if (sh_visibility(mProduct, k.blockers.has_value())) {
     k.table.bind_storage(kTable);  // the sky SH of the SH modes
     if (k.table_tex.id()) k.table_tex.bind_sampler(kTable);
     k.gamma_tex.bind_sampler(kGammaUnit);

@@ -20,18 +20,21 @@
 // SIMD lanes. Centre (field frame: x east, y north, z height; m) and radius (m):
 layout(binding = SPHERES_UNIT) uniform samplerBuffer spheres_tex;
 // blockers::SphereBins::Flat of the sky (group indices) and of the sun (sphere
-// indices), each as one array: the tiles + 1 offsets, then the indices (offsets count from the first index), as
-// floats (exact below 2^24).
+// indices), each as one array: the tiles + 1 offsets, then the indices (offsets count
+// from the first index), as floats (exact below 2^24).
 layout(binding = SKY_BINS_UNIT) uniform samplerBuffer sky_bins_tex;
 layout(binding = SUN_BINS_UNIT) uniform samplerBuffer sun_bins_tex;
 vec4 sphereAt(uint k) { return texelFetch(spheres_tex, int(k)); }
-uint skyBin(int q) { return uint(texelFetch(sky_bins_tex, q).r); }
-uint sunBin(int q) { return uint(texelFetch(sun_bins_tex, q).r); }
+uint binEntry(samplerBuffer bins, uint q) { return uint(texelFetch(bins, int(q)).r); }
 
 uniform int bin_tiles_x;  // tiles per row of the bins
 uniform int bin_tiles;    // tiles in all
 
-int binTile(int i, int j) { return (j / BIN_TEXELS) * bin_tiles_x + i / BIN_TEXELS; }
+// The entries [x, y) of texel (i, j)'s tile in a bin array (sky_bins_tex or sun_bins_tex).
+uvec2 binRange(samplerBuffer bins, int i, int j) {
+  int tile = (j / BIN_TEXELS) * bin_tiles_x + i / BIN_TEXELS;
+  return uint(bin_tiles + 1) + uvec2(binEntry(bins, uint(tile)), binEntry(bins, uint(tile + 1)));
+}
 
 // Texel (i, j) in the field frame: (i dx, -j dy, height) (shading::BlockerFrame::position).
 vec3 texelPosition(int i, int j) { return vec3(float(i) * rowDx(j), -float(j) * grid_dy, heightAt(i, j)); }
@@ -85,7 +88,7 @@ float discSampledLeft(uint first, uint last, vec3 p, vec3 sun) {
     float phi = golden * float(k);
     vec3 dir = cos(t) * sun + sin(t) * (cos(phi) * e1 + sin(phi) * e2);
     bool blocked = false;
-    for (uint q = first; q < last && !blocked; ++q) blocked = rayHitsSphere(sphereAt(sunBin(int(q))), p, dir);
+    for (uint q = first; q < last && !blocked; ++q) blocked = rayHitsSphere(sphereAt(binEntry(sun_bins_tex, q)), p, dir);
     open += blocked ? 0 : 1;
   }
   return float(open) / float(DISC_UNION_SAMPLES);
@@ -94,15 +97,14 @@ float discSampledLeft(uint first, uint last, vec3 p, vec3 sun) {
 // Fraction of the sun disc (unit direction sun) the spheres leave at texel (i, j):
 // exact for one sphere over the disc, the union sampled for several, 0 inside one.
 float sunLeft(int i, int j, vec3 sun) {
-  int tile = binTile(i, j);
-  uint base = uint(bin_tiles + 1);
-  uint first = base + sunBin(tile), last = base + sunBin(tile + 1);
+  uvec2 range = binRange(sun_bins_tex, i, j);
+  uint first = range.x, last = range.y;
   if (first == last) return 1.0;
   vec3 p = texelPosition(i, j);
   int count = 0;
   float left = 1.0;
   for (uint q = first; q < last; ++q) {
-    vec4 s = sphereAt(sunBin(int(q)));
+    vec4 s = sphereAt(binEntry(sun_bins_tex, q));
     vec3 to_c = s.xyz - p;
     float d = length(to_c);
     if (d <= s.w) return 0.0;
@@ -159,8 +161,8 @@ bool belowHorizon(vec4 s, vec3 p, vec3 n, int i, int j, vec2 highest) {
 
 // Whether the texel's sky bin lists any sphere.
 bool skyBinned(int i, int j) {
-  int tile = binTile(i, j);
-  return skyBin(tile) != skyBin(tile + 1);
+  uvec2 range = binRange(sky_bins_tex, i, j);
+  return range.x != range.y;
 }
 
 // Adds the log*-visibility of the cap of sphere s (the equivalent sphere of a group:
@@ -198,14 +200,13 @@ layout(binding = ORDER_UNIT) uniform samplerBuffer order_tex;
 int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[SH_COEFFS]) {
   vec2 highest = horizonSinCos(highest_slope);
   for (int r = 0; r < SH_COEFFS; ++r) f[r] = 0.0;
-  int tile = binTile(i, j);
-  uint base = uint(bin_tiles + 1);
-  uint first = base + skyBin(tile), last = base + skyBin(tile + 1);
+  uvec2 range = binRange(sky_bins_tex, i, j);
+  uint first = range.x, last = range.y;
   if (first == last) return 0;
   vec3 p = texelPosition(i, j);
   int kept = 0;
   for (uint q = first; q < last; ++q) {
-    int g = int(skyBin(int(q)));
+    int g = int(binEntry(sky_bins_tex, q));
     vec4 bound = texelFetch(groups_tex, 2 * g), shape = texelFetch(groups_tex, 2 * g + 1);
     if (bound.w <= MERGE_SIN * length(bound.xyz - p)) {
       kept += addCap(vec4(bound.xyz, sqrt(shape.x)), bound, p, n, i, j, highest, f) ? 1 : 0;

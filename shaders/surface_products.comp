@@ -318,8 +318,9 @@ void main() {
 #if BLOCKERS
   // The change of the visibility where a sphere survives, shaded by the uniform sky's table.
   float f[SH_COEFFS], vis[SH_COEFFS], highest;
-  if (skyBinned(i, j)) terrainVisibility(i, j, n, vis, highest);
-  if (skyBinned(i, j) && sphereLogVisibility(i, j, n, highest, f) > 0) {
+  bool binned = skyBinned(i, j);
+  if (binned) terrainVisibility(i, j, n, vis, highest);
+  if (binned && sphereLogVisibility(i, j, n, highest, f) > 0) {
     float blocked[SH_COEFFS];
     blocked = vis;
     applySpheres(f, blocked);

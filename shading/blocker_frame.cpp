@@ -42,10 +42,10 @@ blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::
 }
 
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
-                                const blockers::SphereGroups& groups, const ProductOptions& options) {
-  return blockers::SphereBins(spheres, groups, receiver_grid(field), options.shaded.sh_order,
-                              frame_blocking(options, spheres).blocker, sun_of(options),
-                              sun_shadow_options(options).radius);
+                                const blockers::SphereGroups& groups, const blockers::SkyBlockingOptions& blocking,
+                                const ProductOptions& options) {
+  return blockers::SphereBins(spheres, groups, receiver_grid(field), options.shaded.sh_order, blocking.blocker,
+                              sun_of(options), sun_shadow_options(options).radius);
 }
 
 BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
@@ -56,7 +56,7 @@ BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const bl
       blocking_(frame_blocking(options, spheres)),
       disc_radius_(sun_shadow_options(options).radius),
       groups_(blockers::group_spheres(spheres)),
-      bins_(frame_bins(field, spheres, groups_, options)) {
+      bins_(frame_bins(field, spheres, groups_, blocking_, options)) {
   blockers::validate(options.blockers.blocker);
 }
 

@@ -27,10 +27,11 @@ blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field);
 // The blocker options of a frame with these spheres: the cull error (the truth's with
 // ProductOptions::exact) shared among them in proportion to their areas r².
 blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres);
-// The spheres and their groups binned over the field's texels for a frame (the GPU
-// uploads the same).
+// The spheres and their groups binned over the field's texels for a frame, with the
+// frame's blocker options (frame_blocking): the GPU uploads the same.
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
-                                const blockers::SphereGroups& groups, const ProductOptions& options);
+                                const blockers::SphereGroups& groups, const blockers::SkyBlockingOptions& blocking,
+                                const ProductOptions& options);
 
 class BlockerFrame {
  public:

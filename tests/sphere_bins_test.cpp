@@ -61,8 +61,9 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
     for (std::uint32_t g = 0; g < groups.groups.size(); ++g)
       for (std::uint32_t m = 0; m < groups.groups[g].count; ++m) group_of[groups.order[groups.groups[g].first + m]] = g;
     EXPECT_LT(groups.groups.size(), spheres.size()) << "some spheres share a group";
-    const SphereBins bins = shading::frame_bins(f, spheres, groups, o);
-    const BlockerOptions blocking = shading::frame_blocking(o, spheres).blocker;
+    const SkyBlockingOptions frame = shading::frame_blocking(o, spheres);
+    const SphereBins bins = shading::frame_bins(f, spheres, groups, frame, o);
+    const BlockerOptions& blocking = frame.blocker;
     const double disc = shading::sun_shadow_options(o).radius;
     int sky_pairs = 0, sun_pairs = 0;
     for (int j = 0; j < f.height; ++j)

@@ -1019,10 +1019,10 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   } else if (eight_bit && lit) {
     // The tone map of lighting.h, on the host with the reference's own function.
     for (float& v : out.data)
-      if (!std::isnan(v)) v = shading::srgb_code_value(static_cast<double>(v) * k.display_per_irradiance);
+      if (!std::isnan(v)) v = shading::display_code_value(static_cast<double>(v) * k.display_per_irradiance, mOptions.shaded.tone);
   } else if (eight_bit) {
     for (float& v : out.data)
-      if (!std::isnan(v)) v = shading::srgb_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure);
+      if (!std::isnan(v)) v = shading::display_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure, mOptions.shaded.tone);
   }
   if (keep) {
     k.vis_valid = true;

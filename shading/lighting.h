@@ -17,7 +17,8 @@
 //
 // Tone map of `shaded` (a fixed exposure per sky model, so the images of a time series
 // are comparable — noon is brighter than dusk, night is black):
-//   code = sRGB(exposure · kShadedKey · albedo · E_c / E_ref)
+//   code = curve(exposure · key · albedo · E_c / E_ref)
+// (curve and key: products.h ToneCurve and shaded_key; sRGB with key kShadedKey by default)
 // with E_c the irradiance of channel c on the surface (sky + sun) and E_ref the
 // broadband irradiance of open flat ground under the same sky model and turbidity with
 // the sun at the zenith (for a map: the map's own horizontal irradiance, plus the

@@ -144,4 +144,9 @@ float srgb_code_value(double linear) {
   return static_cast<float>(1.0 + std::round(254.0 * encoded));
 }
 
+float display_code_value(double linear, ToneCurve tone) {
+  if (tone == ToneCurve::Srgb) return srgb_code_value(linear);
+  return static_cast<float>(1.0 + std::round(254.0 * std::clamp(linear, 0.0, 1.0)));
+}
+
 }  // namespace skylit::shading

@@ -86,12 +86,19 @@ struct ExactOptions {
   double step_texels = 0.5;     // march step, in texels along the ray's dominant axis
 };
 
+// How `shaded`'s linear display value becomes an 8-bit code: the sRGB curve, for pictures
+// (colour skies), or linear codes as hillshades store them (gdaldem's 255·cos): a grey
+// relief that is multiplied with other layers in a GIS, and keeps the contrast of the
+// sun side against the sky side that the sRGB curve flattens (docs/gallery.md).
+enum class ToneCurve { Srgb, Linear };
+
 struct ShadedOptions {
   // How V meets the sky (docs/numerics.md §3): the sky×BRDF table is the most accurate
   // at the same per-texel cost; triple product and the seed's log-BRDF are selectable.
   ShadingMode mode = ShadingMode::SkyBrdfTable;
   double albedo = 1.0;          // Lambert albedo
-  double exposure = 1.0;        // linear radiance multiplier before the sRGB curve
+  double exposure = 1.0;        // linear radiance multiplier before the tone curve
+  ToneCurve tone = ToneCurve::Srgb;
   int sh_order = 4;             // n: SH bands of the visibility
   int nlp_order = 8;            // N ≥ n (N = 2n removes most of the odd-|m| floor)
   // Wedge interpolation of the slices over azimuth: linear (M_lin, n²×2N) or cubic
@@ -171,5 +178,11 @@ double skyview_slice_integral(double lo, const glm::dvec3& normal, double u_east
 
 // 8-bit sRGB code value (1…255) of a linear radiance after exposure.
 float srgb_code_value(double linear);
+// 8-bit code value (1…255) of a linear display value by `tone`: sRGB, or 1 + 254·x.
+float display_code_value(double linear, ToneCurve tone);
+// The display value of open flat ground at the tone map's E_ref (lighting.h): kShadedKey
+// under the sRGB curve (headroom for slopes facing a low sun, which reach about E_ref);
+// 1 under the linear curve, which then matches gdaldem's cos = 1 → 255.
+inline double shaded_key(ToneCurve tone) { return tone == ToneCurve::Srgb ? kShadedKey : 1.0; }
 
 }  // namespace skylit::shading

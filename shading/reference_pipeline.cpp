@@ -101,7 +101,7 @@ Radiance channel_radiance(std::shared_ptr<const sky::SkyModel> sky, bool rgb, in
 }
 
 double shaded_display_scale(const ShadedOptions& shaded, const Lighting& lighting) {
-  return shaded.exposure * kShadedKey * shaded.albedo / lighting.reference_irradiance;
+  return shaded.exposure * shaded_key(shaded.tone) * shaded.albedo / lighting.reference_irradiance;
 }
 
 Radiance uniform_sky_radiance() {

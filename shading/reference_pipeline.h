@@ -46,7 +46,7 @@ class HorizonOracle {
 // the sun's march (sun_light.h) as the products' options set it (curvature, distance,
 // exact); the radiance of output channel c of a sky (R, G, B when rgb, else the
 // broadband luminance); and the tone map factor of lit `shaded` (lighting.h):
-// code = sRGB(E · shaded_display_scale).
+// code = display_code_value(E · shaded_display_scale, tone).
 SunShadowOptions sun_shadow_options(const ProductOptions& options);
 // The sky of unlit `shaded`: uniform radiance 1 above the horizontal, 0 below.
 Radiance uniform_sky_radiance();

@@ -394,13 +394,13 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
           }
           if (!lighting) {
             const double radiance = options.shaded.albedo * uniform_sky->radiance(vis, log_vis, n);
-            put(0, i, j, srgb_code_value(radiance * options.shaded.exposure));
+            put(0, i, j, display_code_value(radiance * options.shaded.exposure, options.shaded.tone));
             break;
           }
           const double sun = shadow.empty() ? 0.0 : shadow[texel];
           for (int c = 0; c < lighting->channels(); ++c) {
             const double e = lighting->irradiance(c, vis, log_vis, n, sun);
-            put(c, i, j, kind.eight_bit ? srgb_code_value(e * display_per_irradiance) : e);
+            put(c, i, j, kind.eight_bit ? display_code_value(e * display_per_irradiance, options.shaded.tone) : e);
           }
           break;
         }

@@ -5,6 +5,7 @@
 #include "cli_test_util.h"
 #include "terrain_test_util.h"
 
+#include "shading/products.h"
 #include "shading/sky/atmosphere.h"
 #include "shading/sky/sun_disc.h"
 #include "shading/sky/sun_position.h"
@@ -179,12 +180,21 @@ TEST(CliLighting, ShadedIsGreyForUniformRgbForColourSkiesAndSkyOnlyKeepsTheClass
   EXPECT_EQ(classic.at(0, 4, 4), 255.0f);  // open flat ground under the uniform sky: white
   const Raster dflt = shade("default.png", "");
   ASSERT_EQ(dflt.bands, 1);
-  // gdaldem's sun (45°) + sky over the zenith-sun reference, key 0.8: a mid-light grey.
-  EXPECT_GT(dflt.at(0, 4, 4), 150.0f);
-  EXPECT_LT(dflt.at(0, 4, 4), 231.0f);
+  // gdaldem's sun (45°) + sky over the zenith-sun reference. A grey sky takes the
+  // linear tone (--tone auto): 1 + 254·E/E_ref, E = D + DNI·sin e of the ESRA clear sky.
+  auto open_ground = [](double e_deg) {
+    const double e = e_deg * kDeg;
+    return skylit::sky::esra_diffuse_horizontal(e, 3.0) + skylit::sky::broadband_dni(e, 3.0) * std::sin(e);
+  };
+  const double x = open_ground(45.0) / open_ground(90.0);
+  EXPECT_NEAR(dflt.at(0, 4, 4), 1.0 + std::round(254.0 * x), 1.0);
+  const Raster srgb = shade("srgb.png", " --tone srgb");  // the picture's curve, key 0.8
+  EXPECT_NEAR(srgb.at(0, 4, 4), skylit::shading::srgb_code_value(0.8 * x), 1.0);
   const Raster colour = shade("colour.png", " --sky preetham -alt 20 -az 135");
   ASSERT_EQ(colour.bands, 3);
   EXPECT_GT(colour.at(0, 4, 4), colour.at(2, 4, 4));  // a low sun is warm
+  const Raster colour_srgb = shade("colour_srgb.png", " --sky preetham -alt 20 -az 135 --tone srgb");
+  for (int b = 0; b < 3; ++b) EXPECT_EQ(colour.at(b, 4, 4), colour_srgb.at(b, 4, 4));  // colour skies: sRGB
   const Raster night = shade("night.png", " --sky preetham --sun-elevation -25");
   for (int b = 0; b < 3; ++b) EXPECT_EQ(night.at(b, 4, 4), 1.0f);  // black, not nodata
 }

@@ -228,6 +228,26 @@ TEST(LitProducts, ShadedIsRgbForColourSkiesAndToneMappedToTheReference) {
   EXPECT_FALSE(uses_lighting(Product::Shaded, ProductOptions{}));
 }
 
+TEST(LitProducts, LinearToneGivesCodesProportionalToIrradianceAsGdaldem) {
+  const auto flat = test::make_field(17, 17, 30.0);
+  for (double elevation : {90.0, 30.0}) {
+    const ResolvedLighting grey = resolve_lighting(angles(180, elevation), std::nullopt);
+    ProductOptions o = lit_options(grey);
+    o.shaded.tone = ToneCurve::Linear;
+    const ProductBands shaded = compute_product(flat, Product::Shaded, o);
+    const ProductBands irradiance = compute_product(flat, Product::Irradiance, o);
+    // 1 + 254·E/E_ref: open flat ground under the zenith sun is white, as gdaldem's cos = 1.
+    const double x = irradiance.at(0, 8, 8) / grey.lighting.reference_irradiance;
+    EXPECT_EQ(shaded.at(0, 8, 8), static_cast<float>(1.0 + std::round(254.0 * std::min(x, 1.0)))) << elevation;
+    if (elevation == 90.0) {
+      EXPECT_EQ(shaded.at(0, 8, 8), 255.0f);
+    }
+  }
+  EXPECT_EQ(display_code_value(0.5, ToneCurve::Linear), 128.0f);
+  EXPECT_EQ(display_code_value(-1.0, ToneCurve::Linear), 1.0f);
+  EXPECT_EQ(display_code_value(0.5, ToneCurve::Srgb), srgb_code_value(0.5));
+}
+
 TEST(LitProducts, NeedLighting) {
   const auto flat = test::make_field(9, 9, 1.0);
   EXPECT_THROW(compute_product(flat, Product::Shadow, ProductOptions{}), std::invalid_argument);

@@ -70,7 +70,18 @@ struct ShadeArgs {
   std::string track;    // --track FILE
   std::string aircraft = "glider";
   std::string altitude = "gnss";
+  std::string tone = "auto";
 };
+
+// --tone auto: linear codes for a grey relief (a hillshade, as gdaldem stores it), the
+// sRGB curve for a colour sky's picture.
+shading::ToneCurve tone_curve(const ShadeArgs& a) {
+  if (a.tone == "linear") return shading::ToneCurve::Linear;
+  if (a.tone == "srgb") return shading::ToneCurve::Srgb;
+  const auto kind = shading::parse_sky_spec(a.lighting.sky).kind;
+  const bool colour = kind == shading::SkySpec::Kind::Preetham || kind == shading::SkySpec::Kind::EnvMap;
+  return colour ? shading::ToneCurve::Srgb : shading::ToneCurve::Linear;
+}
 
 // The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
 // white) is what --no-sun gives when nothing else about the light is asked for.
@@ -318,6 +329,7 @@ int run_shade(const ShadeArgs& a) {
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
+  opt.shaded.tone = tone_curve(a);
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
   if (times)
@@ -427,7 +439,12 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
   cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
-  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the sRGB curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the tone curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--tone", args->tone,
+                  "8-bit tone curve of shaded: linear (codes proportional to irradiance, as gdaldem's hillshade), "
+                  "srgb (a picture), auto (linear for grey skies, srgb for colour skies)")
+      ->check(CLI::IsMember({"auto", "linear", "srgb"}))
+      ->capture_default_str();
   auto& l = args->lighting;
   cmd->add_option("--time", l.time,
                   "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "

@@ -18,6 +18,8 @@ enum class RadiusRule {
   kHalfSolidShell,  // minimise the cluster's own symmetric difference: the radius where
                     // half of the sphere's surface (within its Voronoi cell) lies in the solid
   kVolumeShare,     // the sphere's volume equals its cluster's share of the solid's volume
+  kPlanformArea,    // the sphere's disc equals its cluster's area seen from above (the
+                    // body's x-y plane): what the shadows below see of thin wings
 };
 
 struct FitOptions {

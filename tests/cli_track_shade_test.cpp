@@ -74,26 +74,30 @@ TEST(CliTrackShade, TheAircraftsShadowFallsWhereTheSunProjectsIt) {
   ScratchDir dir;
   const glm::dvec2 c = utm32(kLat, kLon);
   const std::string dem = flat_dem(dir, c), track = igc(dir), out = dir.file("s.tif");
-  const auto r = run_skylit("shade " + dem + " -o " + out + " -p shadow --track " + track +
-                                " --aircraft airliner --track-altitude agl-offset=60 --time 2026-06-21T10:00:01Z "
-                                "--sun-azimuth 180 --sun-elevation 60 -q",
-                            true);
-  ASSERT_EQ(r.status, 0) << r.out;
-  const auto v = read_output(out).v;
-  const double x0 = std::round(c.x) - 80.0, y0 = std::round(c.y) + 60.0;
-  double n = 0, sx = 0, sy = 0;
-  for (int j = 0; j < 120; ++j)
-    for (int i = 0; i < 160; ++i)
-      if (v[j * 160 + i] < 0.5f) {
-        ++n;
-        sx += x0 + i + 0.5;
-        sy += y0 - j - 0.5;
-      }
-  ASSERT_GT(n, 30) << "no shadow";
-  // The sun due south at 60°: the shadow of a point 60 m up lies 60/tan 60° north of it.
-  // The set's centroid is within a few metres of its reference point.
-  EXPECT_NEAR(sx / n, c.x, 4.0);
-  EXPECT_NEAR(sy / n, c.y + 60.0 / std::tan(M_PI / 3), 4.0);
+  // Texels in umbra (a penumbra 60 m·0.0093 = 0.6 m wide): at least half the planform, as
+  // the airliner's wings alone are 34 m × 4 m, the glider's 15 m × 0.6 m or more.
+  for (const auto& [aircraft, min_texels] : {std::pair{"airliner", 60}, std::pair{"glider", 5}}) {
+    const auto r = run_skylit("shade " + dem + " -o " + out + " -p shadow --track " + track + " --aircraft " + aircraft +
+                                  " --track-altitude agl-offset=60 --time 2026-06-21T10:00:01Z "
+                                  "--sun-azimuth 180 --sun-elevation 60 -q --overwrite",
+                              true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const auto v = read_output(out).v;
+    const double x0 = std::round(c.x) - 80.0, y0 = std::round(c.y) + 60.0;
+    double n = 0, sx = 0, sy = 0;
+    for (int j = 0; j < 120; ++j)
+      for (int i = 0; i < 160; ++i)
+        if (v[j * 160 + i] < 0.5f) {
+          ++n;
+          sx += x0 + i + 0.5;
+          sy += y0 - j - 0.5;
+        }
+    ASSERT_GE(n, min_texels) << aircraft << ": no shadow";
+    // The sun due south at 60°: the shadow of a point 60 m up lies 60/tan 60° north of it.
+    // The set's centroid is within a few metres of its reference point.
+    EXPECT_NEAR(sx / n, c.x, 4.0) << aircraft;
+    EXPECT_NEAR(sy / n, c.y + 60.0 / std::tan(M_PI / 3), 4.0) << aircraft;
+  }
 }
 
 TEST(CliTrackShade, BadInputsFailWithOneLine) {

@@ -41,6 +41,32 @@ TEST(SphereFit, OneSphereRecoversABall) {
   }
 }
 
+TEST(SphereFit, PlanformSpheresCastAThinWingsShadow) {
+  // A 12 m × 1 m × 0.12 m plate: seen from far below it subtends its area 12 m² / d².
+  // K = 1: the planform disc has that area plus what the cells cut by the outline add,
+  // at most one cell row along the perimeter (h = 2·cbrt(V/n), the rule's cell; with
+  // 8t/h ≈ 11 points per cell no inner cell stays empty). K = 12: the discs cover it as seen from below
+  // within 15 %, where the shell rule's balls of the plate's thickness miss most of it.
+  const Mesh plate = make_box({-0.5, -6.0, -0.06}, {0.5, 6.0, 0.06});
+  const FitOptions o1 = quick(1, RadiusRule::kPlanformArea);
+  const SphereFit one = fit_spheres(plate, o1);
+  ASSERT_EQ(one.spheres.size(), 1u);
+  const double h = 2.0 * std::cbrt(1.44 / static_cast<double>(o1.samples));
+  const double area = kPi * one.spheres[0].radius * one.spheres[0].radius;
+  EXPECT_GE(area, 0.99 * 12.0);
+  EXPECT_LE(area, 12.0 + 26.0 * h);
+  auto from_below = [](const FitReport& r) {
+    for (const auto& v : r.views)
+      if (v.view.label.find("below") != std::string::npos) return v.relative();
+    ADD_FAILURE() << "no view from below";
+    return 0.0;
+  };
+  const SphereFit planform = fit_spheres(plate, quick(12, RadiusRule::kPlanformArea));
+  EXPECT_LT(std::abs(from_below(planform.report)), 0.15);
+  const SphereFit shell = fit_spheres(plate, quick(12, RadiusRule::kHalfSolidShell));
+  EXPECT_LT(from_below(shell.report), -0.5);
+}
+
 TEST(SphereFit, TwoSpheresSitOnTheLobesOfADumbbell) {
   // Balls of radius 1 at x = ±3 joined by a rod of radius 0.2 along x. Each cluster is
   // one half; its centroid is pulled inward by the rod's 2 m outside the ball (centred at

@@ -29,6 +29,12 @@ struct FitArgs {
   bool quiet = false;
 };
 
+fl::RadiusRule radius_rule(const std::string& name) {
+  if (name == "volume") return fl::RadiusRule::kVolumeShare;
+  if (name == "planform") return fl::RadiusRule::kPlanformArea;
+  return fl::RadiusRule::kHalfSolidShell;
+}
+
 void refuse_existing(const std::string& path, bool overwrite) {
   std::error_code ec;
   if (!path.empty() && std::filesystem::exists(path, ec) && !overwrite)
@@ -64,7 +70,7 @@ int run_spheres_fit(FitArgs a) {
   check_writable(a.output, "sphere set");
   if (!a.write_mesh.empty()) check_writable(a.write_mesh, "mesh");
   if (!a.svg.empty()) check_writable(a.svg, "picture");
-  a.fit.radius_rule = a.radius_rule == "volume" ? fl::RadiusRule::kVolumeShare : fl::RadiusRule::kHalfSolidShell;
+  a.fit.radius_rule = radius_rule(a.radius_rule);
 
   const fl::Mesh mesh = a.aircraft.empty() ? fl::read_mesh(a.mesh_path) : fl::make_aircraft_mesh(a.aircraft);
   const std::string what = a.aircraft.empty() ? a.mesh_path : "aircraft '" + a.aircraft + "'";
@@ -80,7 +86,7 @@ int run_spheres_fit(FitArgs a) {
   set.length_m = box.size().x;
   set.span_m = box.size().y;
   set.height_m = box.size().z;
-  const std::string rule = a.fit.radius_rule == fl::RadiusRule::kVolumeShare ? "volume" : "shell";
+  const std::string& rule = a.radius_rule;
   set.source = (a.aircraft.empty() ? "mesh " + std::filesystem::path(a.mesh_path).filename().string()
                                    : "procedural aircraft '" + a.aircraft + "' (flight/aircraft_mesh.cpp)") +
                "; skylit spheres-fit -k " + std::to_string(a.fit.k) + " --seed " + std::to_string(a.fit.seed) +
@@ -120,8 +126,10 @@ void add_spheres_fit_command(CLI::App& root, Action& run) {
       ->check(CLI::Range(1LL, 1'000'000'000LL))->capture_default_str();
   cmd->add_option("--error-rays", args->fit.error_rays, "Rays per viewpoint for the solid-angle error")
       ->check(CLI::Range(1LL, 1'000'000'000LL))->capture_default_str();
-  cmd->add_option("--radius", args->radius_rule, "Radius rule: shell (half the sphere's surface in the solid) or volume (volume share)")
-      ->check(CLI::IsMember({"shell", "volume"}))->capture_default_str();
+  cmd->add_option("--radius", args->radius_rule,
+                  "Radius rule: shell (half the sphere's surface in the solid), volume (volume share) or planform "
+                  "(the disc of the cluster's area seen from above: thin wings for shadows below)")
+      ->check(CLI::IsMember({"shell", "volume", "planform"}))->capture_default_str();
   cmd->add_option("--name", args->name, "Name in the set (default: the aircraft or the mesh file's stem)");
   cmd->add_option("--write-mesh", args->write_mesh, "Also write the mesh as OBJ");
   cmd->add_option("--svg", args->svg, "Also write a picture: top and side views, spheres over the mesh");

@@ -27,7 +27,7 @@ std::string format_duration(double seconds) {
 }
 
 struct Truth {
-  shading::ProductBands skyview, shaded;
+  shading::ProductBands skyview, shaded, svf;
   // shaded at (n, N, wedge) of the settings that asked, computed at first need.
   std::vector<std::pair<std::tuple<int, int, sh::WedgeInterpolation>, shading::ProductBands>> same_order;
 };
@@ -51,8 +51,10 @@ std::optional<Truth> compute_truth(const BenchScene& scene, const BenchConfig& c
   const shading::ProductOptions options = truth_options(config.threads);
   FrameTime skyview_time, shaded_time;
   Truth truth{timing.compute(scene.field, Product::Skyview, options, skyview_time),
-              timing.compute(scene.field, Product::Shaded, options, shaded_time), {}};
-  const double seconds = (skyview_time.wall_ms + shaded_time.wall_ms) / 1000.0;
+              timing.compute(scene.field, Product::Shaded, options, shaded_time), {}, {}};
+  FrameTime svf_time;
+  truth.svf = timing.compute(scene.field, Product::Svf, options, svf_time);
+  const double seconds = (skyview_time.wall_ms + shaded_time.wall_ms + svf_time.wall_ms) / 1000.0;
   note("ground truth for " + scene.name + " " + scene.size() + ": " + format_duration(seconds));
   if (!measured || side > measured->first) measured = std::pair{side, seconds};
   return truth;
@@ -133,11 +135,20 @@ std::vector<BenchRow> run_scene(const BenchScene& scene, const std::vector<Bench
       });
       if (same != rows.end()) {
         row.skyview = same->skyview;
+        row.svf = same->svf;
+        row.svf_ms = same->svf_ms;
+        row.skyview_ms = same->skyview_ms;
       } else if (const auto why = timing.lacks(Product::Skyview, options)) {
         note(s.label() + ": skyview error NA on " + row.backend + ": " + *why);
       } else {
         FrameTime t;
         row.skyview = error_stats(timing.compute(scene.field, Product::Skyview, options, t), truth->skyview);
+        row.skyview_ms = t.host_ms;
+        if (!timing.lacks(Product::Svf, options)) {
+          FrameTime v;
+          row.svf = error_stats(timing.compute(scene.field, Product::Svf, options, v), truth->svf);
+          row.svf_ms = v.host_ms;
+        }
       }
     }
     on_row(row);

@@ -45,6 +45,9 @@ struct BenchRow {
   // shaded against a truth of the setting's own SH order, NLP order and wedge (exact
   // horizons): the horizons' error without the band limit that `shaded` charges.
   ErrorStats shaded_same_order{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  // svf against its truth, and one call of svf and skyview on the host clock (for the front).
+  ErrorStats svf{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  double svf_ms = std::numeric_limits<double>::quiet_NaN(), skyview_ms = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Seconds the brute-force truth (skyview + shaded) would take on the reference

@@ -2,6 +2,7 @@
 // measures its error against the brute-force ground truth; prints a table, writes a
 // CSV and an SVG of error against time with the Pareto front (the basis of the
 // --quality presets, docs/quality-presets.md).
+#include "app/bench/bench_front.h"
 #include "app/bench/bench_output.h"
 #include "app/bench/bench_run.h"
 #include "app/bench/svg_plot.h"
@@ -21,13 +22,14 @@ namespace skylit::app::bench {
 namespace {
 
 struct BenchArgs {
-  std::string dem;
+  std::vector<std::string> dems;
   std::vector<int> sizes = {512, 1024, 2048, 4096};
   std::uint64_t seed = 1;
   std::string backend = gpu::backend_names().front();
   std::string sweep = "default";
   std::string clock = clock_names().front();
-  std::string csv, plot;
+  std::string csv, plot, front;
+  bool with_synthetic = false;  // --front: the synthetic scene too, next to the DEMs
   BenchConfig config;
   bool sizes_given = false;
 };
@@ -40,7 +42,7 @@ BenchScene synthetic_scene(int size, std::uint64_t seed) {
 }
 
 int run_bench(const BenchArgs& a) {
-  if (!a.dem.empty() && a.sizes_given)
+  if (!a.dems.empty() && a.sizes_given && !a.with_synthetic)
     throw std::invalid_argument("--sizes applies to the built-in scenes; a DEM is benchmarked at its own size");
   const std::vector<BenchSetting> settings = sweep_settings(a.sweep);
   const auto timing = make_timing_source(a.backend, a.clock);  // "auto" resolved here, once
@@ -48,6 +50,7 @@ int run_bench(const BenchArgs& a) {
   // Fail on bad output paths before hours of work, leaving nothing behind.
   if (!a.csv.empty()) check_writable(a.csv, "CSV");
   if (!a.plot.empty()) check_writable(a.plot, "plot");
+  if (!a.front.empty()) check_writable(a.front, "front");
 
   std::cerr << "skylit: bench: " << settings.size() << " settings (--sweep " << a.sweep << "), " << a.config.runs
             << " runs after " << a.config.warmup << " warm-up, backend " << timing->backend() << ", "
@@ -61,15 +64,21 @@ int run_bench(const BenchArgs& a) {
                                 [](const BenchRow& r) { print_table_row(std::cout, r); }, note);
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
   };
-  if (!a.dem.empty()) {
-    auto read = terrain::read_dem(a.dem);
+  for (const std::string& dem : a.dems) {
+    auto read = terrain::read_dem(dem);
     for (const auto& w : read.warnings) std::cerr << "skylit: warning: " << w << "\n";
-    bench_one({std::filesystem::path(a.dem).filename().string(), std::move(read.field)});
-  } else {
-    for (int size : a.sizes) bench_one(synthetic_scene(size, a.seed));
+    bench_one({std::filesystem::path(dem).filename().string(), std::move(read.field)});
   }
+  if (a.dems.empty() || a.with_synthetic)
+    for (int size : a.sizes) bench_one(synthetic_scene(size, a.seed));
   if (!a.csv.empty()) write_text_atomically(a.csv, csv_text(rows), "CSV");
   if (!a.plot.empty()) write_text_atomically(a.plot, pareto_svg(rows), "plot");
+  if (!a.front.empty())
+    write_text_atomically(a.front,
+                          front_csv_text(rows, "skylit bench --sweep " + a.sweep + " --backend " + std::string(timing->backend()) +
+                                                   ", " + std::string(timing->clock()) + " clock, " + std::to_string(a.config.runs) +
+                                                   " runs"),
+                          "front");
   return 0;
 }
 
@@ -79,7 +88,7 @@ void add_bench_command(CLI::App& root, Action& run) {
   auto args = std::make_shared<BenchArgs>();
   auto* cmd = root.add_subcommand(
       "bench", "Sweep quality settings: time per frame and error against brute force, CSV and Pareto plot");
-  cmd->add_option("DEM", args->dem, "DEM raster to benchmark (default: the built-in synthetic scene at --sizes)");
+  cmd->add_option("DEM", args->dems, "DEM rasters to benchmark, each at its own size (default: the built-in synthetic scene at --sizes)");
   cmd->add_option("--sizes", args->sizes, "Sides of the built-in scenes, comma-separated")
       ->delimiter(',')->check(CLI::Range(2, 16384))->capture_default_str()
       ->each([args](const std::string&) { args->sizes_given = true; });
@@ -104,6 +113,10 @@ void add_bench_command(CLI::App& root, Action& run) {
   cmd->add_option("--threads", args->config.threads, "Worker threads of the reference backend (0: all cores)")
       ->capture_default_str();
   cmd->add_option("-o,--output", args->csv, "CSV of all settings (written atomically)");
+  cmd->add_option("--front", args->front,
+                  "CSV of the speed/error front over all scenes, per product, for skylit shade --max-error "
+                  "(data/quality/front.csv; scripts/make_quality_front.sh)");
+  cmd->add_flag("--with-synthetic", args->with_synthetic, "Bench the synthetic scene at --sizes next to the DEMs");
   cmd->add_option("--plot", args->plot, "SVG of error against time with the Pareto front");
   cmd->callback([&run, args] { run = [args] { return run_bench(*args); }; });
 }

@@ -4,6 +4,7 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/shade/max_error.h"
 #include "app/shade/shade_output.h"
 #include "app/shade/shade_series.h"
 #include "app/shade/sphere_input.h"
@@ -50,6 +51,7 @@ struct ShadeArgs {
   std::optional<double> scale, xscale, yscale;
   shading::ProductOptions options;  // defaults come from the library
   std::string quality = "default";
+  std::optional<double> max_error;  // --max-error E: the front picks the knobs
   std::string shading_mode = "table";
   std::string wedge = "linear";
   std::string levels{horizon::level_sampling_name(horizon::level_sampling(horizon::MarchOptions{}))};
@@ -393,6 +395,10 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "--near-steps/--sweep-lines/--sh-order/--nlp-order win")
       ->check(CLI::IsMember({"fast", "default", "high"}))
       ->capture_default_str();
+  cmd->add_option("--max-error", args->max_error,
+                  "Cheapest setting on the measured speed/error front (data/quality/front.csv) whose RMSE is at "
+                  "most E: svf and skyview in fractions of the sky, shaded in 8-bit code values (uniform sky); "
+                  "explicit quality knobs win (docs/quality-presets.md)");
   cmd->add_option("--shading-mode", args->shading_mode,
                   "How visibility meets the sky: table (sky x BRDF table, the accurate default) | triple "
                   "(SH triple product) | log-brdf (the seed's log-SH BRDF; errs by tens of %, docs/numerics.md)")
@@ -496,6 +502,17 @@ void add_shade_command(CLI::App& root, Action& run) {
     // The preset sets the quality knobs the user did not give explicitly.
     shading::ProductOptions preset = args->options;
     shading::apply_quality(*shading::parse_quality(args->quality), preset);
+    std::string max_error_note;
+    if (args->max_error) {
+      try {
+        max_error_note = apply_max_error(*args->max_error, args->product, *cmd, preset);
+      } catch (const std::invalid_argument& e) {
+        run = [why = std::string(e.what())]() -> int { throw std::invalid_argument(why); };
+        return;
+      }
+      if (!cmd->count("--subsample")) args->options.subsample = preset.subsample;
+      if (!cmd->count("--wedge")) args->wedge = preset.shaded.wedge == sh::WedgeInterpolation::BSpline ? "bspline" : "linear";
+    }
     auto& o = args->options;
     if (!cmd->count("--azimuths")) o.march.azimuths = preset.march.azimuths;
     if (!cmd->count("--kv")) o.march.k_v = preset.march.k_v;
@@ -513,7 +530,10 @@ void add_shade_command(CLI::App& root, Action& run) {
     args->options.shaded.mode = *shading::parse_shading_mode(args->shading_mode);
     args->options.shaded.wedge =
         args->wedge == "bspline" ? sh::WedgeInterpolation::BSpline : sh::WedgeInterpolation::Linear;
-    run = [args] { return run_shade(*args); };
+    run = [args, max_error_note] {
+      if (!max_error_note.empty() && !args->quiet) std::cerr << "skylit: " << max_error_note << "\n";
+      return run_shade(*args);
+    };
   });
 }
 

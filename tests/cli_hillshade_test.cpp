@@ -89,6 +89,31 @@ TEST(CliHillshade, EqualsGdaldemOnEveryVariant) {
   }
 }
 
+// -b, --nodata and -of with a copy-only driver, each against the gdaldem run it equals.
+TEST(CliHillshade, BandNodataAndAnyDriver) {
+  REQUIRE_GDALDEM();
+  ScratchDir dir;
+  const auto at = [&](const std::string& n) { return (dir.path() / n).string(); };
+  const std::string dem = shared_dem("slovenia_lidar1m_d96tm.tif");
+  // Band 2 of a two-band VRT is a crop with a nodata value gdaldem is given; skylit gets
+  // the same band without nodata and --nodata 300.
+  ASSERT_EQ(sh("gdal_translate -q -srcwin 300 300 200 200 -a_nodata 300 " + dem + " " + at("nd.tif")), 0);
+  ASSERT_EQ(sh("gdal_translate -q -srcwin 300 300 200 200 -a_nodata none " + dem + " " + at("plain.tif")), 0);
+  ASSERT_EQ(sh("gdalbuildvrt -q -separate " + at("two.vrt") + " " + at("plain.tif") + " " + at("plain.tif")), 0);
+  ASSERT_EQ(sh("gdaldem hillshade -q " + at("nd.tif") + " " + at("ref.tif")), 0);
+  auto r = run_skylit("shade " + at("two.vrt") + " -b 2 --nodata 300 -p hillshade -q -o " + at("got.tif"), true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(differing_pixels(read_output(at("ref.tif")), read_output(at("got.tif"))), 0);
+  // A copy-only driver (AAIGrid has CreateCopy alone).
+  ASSERT_EQ(sh("gdaldem hillshade -q -of AAIGrid " + at("nd.tif") + " " + at("ref.asc")), 0);
+  r = run_skylit("shade " + at("nd.tif") + " -of AAIGrid -p hillshade -q -o " + at("got.asc"), true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(differing_pixels(read_output(at("ref.asc")), read_output(at("got.asc"))), 0);
+  expect_clean_shade_failure(dir, at("nd.tif") + " -b 3 -p hillshade -o " + at("b3.tif"), "band 3 does not exist");
+  expect_clean_shade_failure(dir, at("nd.tif") + " -of NoSuchDriver -p hillshade -o " + at("x.tif"),
+                             "unknown output format 'NoSuchDriver'");
+}
+
 TEST(CliHillshade, RejectsTwoVariantsInOneLine) {
   ScratchDir dir;
   expect_clean_shade_failure(dir, "--synthetic --size 16 -p hillshade -combined -igor -o " +

@@ -48,6 +48,8 @@ struct ShadeArgs {
   std::string format;
   std::vector<std::string> creation_options;
   double z_factor = 1.0;
+  int band = 1;
+  std::optional<double> nodata;
   std::optional<double> scale, xscale, yscale;
   shading::ProductOptions options;  // defaults come from the library
   std::string quality = "default";
@@ -147,6 +149,8 @@ terrain::HeightField load_input(const ShadeArgs& a, double z_factor) {
   opt.xscale = a.xscale;
   opt.yscale = a.yscale;
   opt.z_factor = z_factor;
+  opt.band = a.band;
+  opt.nodata = a.nodata;
   auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), opt) : terrain::read_dem(a.inputs, opt);
   if (!a.quiet)
     for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
@@ -376,6 +380,8 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "sun-hours (hours of direct sun over --time)")
       ->capture_default_str();
   cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
+  cmd->add_option("-b,--band", args->band, "Input band (gdaldem -b)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--nodata", args->nodata, "Input nodata value, overriding the DEM's (gdaldem has none)");
   cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
   cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);

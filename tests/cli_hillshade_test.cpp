@@ -104,6 +104,13 @@ TEST(CliHillshade, BandNodataAndAnyDriver) {
   auto r = run_skylit("shade " + at("two.vrt") + " -b 2 --nodata 300 -p hillshade -q -o " + at("got.tif"), true);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_EQ(differing_pixels(read_output(at("ref.tif")), read_output(at("got.tif"))), 0);
+  // The CPU reference renderer hands the local product to the same function as the GPU one
+  // (auto above): equal too, with -co passed through.
+  r = run_skylit("shade " + at("nd.tif") + " --backend reference -co COMPRESS=DEFLATE -p hillshade -q -o " +
+                     at("ref_backend.tif"),
+                 true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(differing_pixels(read_output(at("ref.tif")), read_output(at("ref_backend.tif"))), 0);
   // A copy-only driver (AAIGrid has CreateCopy alone).
   ASSERT_EQ(sh("gdaldem hillshade -q -of AAIGrid " + at("nd.tif") + " " + at("ref.asc")), 0);
   r = run_skylit("shade " + at("nd.tif") + " -of AAIGrid -p hillshade -q -o " + at("got.asc"), true);

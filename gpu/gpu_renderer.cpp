@@ -2,6 +2,7 @@
 
 #include "gpu/gpu_blockers.h"
 #include "gpu/timer.h"
+#include "shading/local_products.h"
 
 #include <algorithm>
 #include <chrono>
@@ -122,6 +123,11 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
                                          const shading::ProgressCallback& progress) {
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
+  if (shading::traits(product).local) {  // host work: no kernel to prepare
+    shading::ProductBands out = shading::compute_local_product(*field_, product, options);
+    finish_frame(start);
+    return out;
+  }
   const auto render = [&] {
     GpuProductPipeline& pipeline = prepare(product, options, inputs);
     const double construction_ms = timings_.compile_ms;
@@ -139,6 +145,9 @@ shading::ProductBands GpuRenderer::frame(Product product, const shading::FrameIn
 
 GpuFrame GpuRenderer::frame_on_gpu(Product product, const shading::FrameInputs& inputs,
                                    const shading::ProgressCallback& progress) {
+  if (shading::traits(product).local)
+    throw std::invalid_argument(std::string(shading::product_name(product)) +
+                                " is computed on the host (a local product): it has no GPU buffer");
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
   GpuProductPipeline& pipeline = prepare(product, options, inputs);

@@ -21,6 +21,7 @@ constexpr ProductTraits kTraits[] = {
      .eight_bit = true, .blocked = true},
     {.product = Product::Shadow, .name = "shadow", .lit = true, .needs_sun = true, .sun_only = true, .blocked = true},
     {.product = Product::Irradiance, .name = "irradiance", .needs_visibility = true, .lit = true, .needs_sun = true, .blocked = true},
+    {.product = Product::Hillshade, .name = "hillshade", .eight_bit = true, .local = true},
 };
 
 constexpr bool in_enum_order() {

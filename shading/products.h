@@ -29,6 +29,8 @@
 //              E_sky = ∫ L·V·max(n·ω, 0) dω = π·Σ_k V_k·T_k(n) (the SH visibility of
 //              `shaded` and a Lambert sky table of the lighting's sky), plus
 //              E_sun = DNI·max(n·s, 0)·shadow. Needs lighting. Clamped at 0.
+//  * hillshade : gdaldem's hillshade (relief/gdal_hillshade.h) with ProductOptions::hillshade,
+//              8-bit code values 1…255, bit-exact with gdaldem 3.6 (docs/gdaldem.md).
 // Nodata texels are NaN in every band (the writer maps NaN to nodata).
 #pragma once
 
@@ -36,6 +38,7 @@
 #include "shading/horizon/horizon_march.h"
 #include "shading/lighting.h"
 #include "shading/parallel_rows.h"
+#include "shading/relief/gdal_hillshade.h"
 #include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
 #include "terrain/height_field.h"
@@ -50,7 +53,7 @@
 namespace skylit::shading {
 
 // New products are appended: the GPU hands the enum's values to its shaders.
-enum class Product { Horizon, Svf, Skyview, Shaded, Shadow, Irradiance };
+enum class Product { Horizon, Svf, Skyview, Shaded, Shadow, Irradiance, Hillshade };
 
 // What kind of result a product is: the one table every backend and front end reads
 // (nothing else tests for particular products to decide these).
@@ -63,8 +66,11 @@ struct ProductTraits {
   bool lit = false;               // uses ProductOptions::lighting: always (needs_sun) or when it is set (shaded)
   bool needs_sun = false;         // requires the lighting's sun and sky (shadow, irradiance)
   bool sun_only = false;          // the sun's shadow pass alone, no sky horizons (shadow)
-  bool eight_bit = false;         // sRGB code values 1…255 as floats, 0 left for nodata (shaded)
+  bool eight_bit = false;         // 8-bit code values 1…255 as floats, 0 left for nodata (shaded, hillshade)
   bool blocked = false;           // sphere blockers darken it (skyview, shaded, shadow, irradiance)
+  // A 3×3-window product computed on the host from the heights (local_products.h):
+  // no horizons, no lighting, no GPU work; every renderer hands it to compute_local_product.
+  bool local = false;
 };
 
 // Every product's traits, in the enum's order.
@@ -74,7 +80,7 @@ const ProductTraits& traits(Product p);
 
 // traits(p).name; "unknown" for a value outside the enum.
 std::string_view product_name(Product p);
-// "horizon", "svf", "skyview", "shaded", "shadow", "irradiance"; nullopt otherwise.
+// "horizon", "svf", "skyview", "shaded", "shadow", "irradiance", "hillshade"; nullopt otherwise.
 std::optional<Product> parse_product(std::string_view name);
 // The names above joined by ", " (for messages).
 std::string product_names();
@@ -128,6 +134,8 @@ struct ProductOptions {
   std::optional<Lighting> lighting;
   // Sphere blockers (FrameInputs::spheres): ε, culling, composition, HYB.
   blockers::SkyBlockingOptions blockers;
+  // gdaldem's hillshade (the hillshade product; its z applies inside the formula).
+  relief::HillshadeOptions hillshade;
 };
 
 // Throws std::invalid_argument unless ProductOptions::subsample is 1, 2 or 4, and for

@@ -5,6 +5,7 @@
 #include "shading/horizon/horizon_subsample.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/horizon/surface_normals.h"
+#include "shading/local_products.h"
 #include "shading/reference_pipeline.h"
 #include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"
@@ -183,7 +184,9 @@ ProductBands ReferenceRenderer::frame(Product product, const FrameInputs& inputs
   timings_ = {};
   const ProductOptions options = frame_options(options_, inputs);
   ProductBands out;
-  if (auto night = night_shadow(product, inputs, *field_)) {
+  if (traits(product).local) {
+    out = compute_local_product(*field_, product, options);
+  } else if (auto night = night_shadow(product, inputs, *field_)) {
     out = std::move(*night);
   } else if (FrameIndependentCache::applies(product) && !blocked_frame(product, inputs)) {
     out = outputs_.get(product, *field_, options, keep_ || frames_ > 0, progress, timings_.horizons_reused,

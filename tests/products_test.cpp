@@ -28,15 +28,15 @@ ProductOptions flat_earth() {
 
 TEST(ProductNames, RoundTrip) {
   for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded, Product::Shadow,
-                    Product::Irradiance})
+                    Product::Irradiance, Product::Hillshade})
     EXPECT_EQ(parse_product(product_name(p)), p);
-  EXPECT_FALSE(parse_product("hillshade"));
-  EXPECT_EQ(product_names(), "horizon, svf, skyview, shaded, shadow, irradiance");
+  EXPECT_FALSE(parse_product("slope"));
+  EXPECT_EQ(product_names(), "horizon, svf, skyview, shaded, shadow, irradiance, hillshade");
 }
 
 // The traits table (DESIGN.md "Products"), and the band layout every backend takes from it.
 TEST(ProductTraits, TableMatchesTheProductDefinitions) {
-  ASSERT_EQ(all_product_traits().size(), 6u);
+  ASSERT_EQ(all_product_traits().size(), 7u);
   for (const ProductTraits& t : all_product_traits()) {
     EXPECT_EQ(&traits(t.product), &t);
     EXPECT_EQ(product_name(t.product), t.name);
@@ -50,6 +50,9 @@ TEST(ProductTraits, TableMatchesTheProductDefinitions) {
   for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shadow})
     EXPECT_FALSE(traits(p).needs_visibility);
   EXPECT_TRUE(traits(Product::Shadow).sun_only);
+  // Only the 3x3-window product is local: computed on the host, 8-bit, no lighting.
+  for (const ProductTraits& t : all_product_traits()) EXPECT_EQ(t.local, t.product == Product::Hillshade) << t.name;
+  EXPECT_TRUE(traits(Product::Hillshade).eight_bit && !traits(Product::Hillshade).lit);
 
   ProductOptions o;
   o.march.azimuths = 8;

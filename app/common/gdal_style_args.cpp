@@ -7,12 +7,16 @@
 namespace skylit::app {
 
 std::vector<std::string> normalise_gdal_style_args(int argc, char** argv) {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kMap{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kMap{{
       {"-of", "--of"},
       {"-co", "--co"},
       {"-compute_edges", "--compute-edges"},
       {"-az", "--azimuth"},
       {"-alt", "--altitude"},
+      {"-alg", "--alg"},
+      {"-combined", "--combined"},
+      {"-multidirectional", "--multidirectional"},
+      {"-igor", "--igor"},
   }};
   std::vector<std::string> out;
   out.reserve(argc);

@@ -4,6 +4,7 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/shade/hillshade_args.h"
 #include "app/shade/max_error.h"
 #include "app/shade/shade_output.h"
 #include "app/shade/shade_series.h"
@@ -48,6 +49,8 @@ struct ShadeArgs {
   std::string format;
   std::vector<std::string> creation_options;
   double z_factor = 1.0;
+  int band = 1;
+  std::optional<double> nodata;
   std::optional<double> scale, xscale, yscale;
   shading::ProductOptions options;  // defaults come from the library
   std::string quality = "default";
@@ -63,7 +66,8 @@ struct ShadeArgs {
   unsigned threads = 0;
   bool quiet = false;
   bool overwrite = false;
-  bool compute_edges = true;
+  bool compute_edges = false;  // horizon products always compute edges; local ones follow gdaldem
+  HillshadeArgs hillshade;
   bool timings = false;
   shading::LightingRequest lighting;
   bool no_sun = false;
@@ -144,7 +148,7 @@ std::unique_ptr<shading::Renderer> make_shade_renderer(gpu::Backend backend, boo
   }
 }
 
-terrain::HeightField load_input(const ShadeArgs& a) {
+terrain::HeightField load_input(const ShadeArgs& a, double z_factor) {
   if (a.synthetic) {
     if (!a.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
     terrain::SyntheticOptions opt;
@@ -157,7 +161,9 @@ terrain::HeightField load_input(const ShadeArgs& a) {
   opt.scale = a.scale;
   opt.xscale = a.xscale;
   opt.yscale = a.yscale;
-  opt.z_factor = a.z_factor;
+  opt.z_factor = z_factor;
+  opt.band = a.band;
+  opt.nodata = a.nodata;
   auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), opt) : terrain::read_dem(a.inputs, opt);
   if (!a.quiet)
     for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
@@ -314,7 +320,8 @@ int run_shade(const ShadeArgs& a) {
                 << "shaded, shadow and irradiance)\n";
   }
   const auto read_start = std::chrono::steady_clock::now();
-  const terrain::HeightField field = load_input(a);
+  // Local products apply z inside their formula, as gdaldem does: heights stay unscaled.
+  const terrain::HeightField field = load_input(a, kind.local ? 1.0 : a.z_factor);
   const std::vector<blockers::Sphere> spheres = to_field_frame(field, crs_spheres);
   std::optional<TrackedAircraft> aircraft;
   if (!a.track.empty()) {
@@ -332,6 +339,9 @@ int run_shade(const ShadeArgs& a) {
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
   opt.shaded.tone = tone_curve(a);
+  if (kind.local)
+    opt.hillshade = hillshade_options(a.hillshade, a.z_factor, a.lighting.sun_azimuth_deg, a.lighting.sun_elevation_deg,
+                                      a.compute_edges);
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
   if (times)
@@ -380,10 +390,12 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--size", args->size, "Width and height of the synthetic scene (pixels)")
       ->check(CLI::Range(2, 16384))->capture_default_str();
   cmd->add_option("-p,--product", args->product,
-                  "horizon | svf | skyview | shaded | shadow | irradiance | insolation (Wh/m^2 over --time) | "
+                  "horizon | svf | skyview | shaded | shadow | irradiance | hillshade (gdaldem hillshade, bit-exact) | insolation (Wh/m^2 over --time) | "
                   "sun-hours (hours of direct sun over --time)")
       ->capture_default_str();
   cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
+  cmd->add_option("-b,--band", args->band, "Input band (gdaldem -b)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--nodata", args->nodata, "Input nodata value, overriding the DEM's (gdaldem has none)");
   cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
   cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
@@ -494,7 +506,10 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "else reference) | gpu | reference (CPU, double precision)")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
-  cmd->add_flag("--compute-edges", args->compute_edges, "Accepted for gdaldem compatibility: edges are always computed");
+  cmd->add_flag("--compute-edges", args->compute_edges,
+                "-p hillshade: shade the border and nodata-adjacent pixels too (gdaldem -compute_edges); the horizon "
+                "products always compute edges");
+  add_hillshade_options(*cmd, args->hillshade);
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
   cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");

@@ -2,6 +2,7 @@
 
 #include "terrain/raster_writer.h"
 
+#include <gdal_priv.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -23,7 +24,15 @@ std::string canonical_format(const std::string& f) {
   if (l == "gtiff" || l == "tif" || l == "tiff" || l == "geotiff") return "GTiff";
   if (l == "cog") return "COG";
   if (l == "png") return "PNG";
-  throw std::invalid_argument("unsupported output format '" + f + "' (GTiff, COG, PNG)");
+  // Any other GDAL raster driver that can Create or CreateCopy (the writer copies from
+  // an in-memory raster for copy-only ones), as gdaldem -of.
+  GDALAllRegister();
+  GDALDriver* d = GetGDALDriverManager()->GetDriverByName(f.c_str());
+  if (!d || !d->GetMetadataItem(GDAL_DCAP_RASTER))
+    throw std::invalid_argument("unknown output format '" + f + "' (a GDAL raster driver name: GTiff, COG, PNG, ...)");
+  if (!d->GetMetadataItem(GDAL_DCAP_CREATE) && !d->GetMetadataItem(GDAL_DCAP_CREATECOPY))
+    throw std::invalid_argument("GDAL's " + f + " driver cannot write rasters");
+  return d->GetDescription();
 }
 
 std::string format_from_extension(const std::filesystem::path& p) {

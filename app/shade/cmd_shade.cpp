@@ -4,6 +4,7 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/shade/color_relief_cmd.h"
 #include "app/shade/shade_output.h"
 #include "app/shade/shade_series.h"
 #include "app/shade/sphere_input.h"
@@ -61,6 +62,7 @@ struct ShadeArgs {
   unsigned threads = 0;
   bool quiet = false;
   bool overwrite = false;
+  ColorReliefArgs color;  // -p color-relief: --color, --alpha, --exact/--nearest-color-entry
   bool compute_edges = true;
   bool timings = false;
   shading::LightingRequest lighting;
@@ -267,6 +269,14 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
 }
 
 int run_shade(const ShadeArgs& a) {
+  if (a.product == "color-relief") {
+    if (a.inputs.size() != 1) throw std::invalid_argument("-p color-relief takes one DEM");
+    ColorReliefArgs c = a.color;
+    c.input = a.inputs.front();
+    c.output = a.output;
+    c.overwrite = a.overwrite;
+    return run_color_relief(c);
+  }
   const auto summed = shading::parse_summed_product(a.product);
   const auto product = summed ? std::optional(shading::frame_product(*summed)) : shading::parse_product(a.product);
   if (!product)
@@ -475,6 +485,12 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
   cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
+  cmd->add_option("--color", args->color.color_file, "Colour table (gdaldem color-relief syntax, .cpt) for -p color-relief");
+  cmd->add_flag("--alpha", args->color.alpha, "-p color-relief: add an alpha band (gdaldem -alpha)");
+  cmd->add_flag_callback("--exact-color-entry", [args] { args->color.selection = relief::ColorSelection::ExactEntry; },
+                         "-p color-relief: only exact table entries, else transparent black");
+  cmd->add_flag_callback("--nearest-color-entry", [args] { args->color.selection = relief::ColorSelection::NearestEntry; },
+                         "-p color-relief: the nearest table entry, no interpolation");
   cmd->callback([&run, args, cmd] {
     // The preset sets the quality knobs the user did not give explicitly.
     shading::ProductOptions preset = args->options;

@@ -101,6 +101,29 @@ TEST_F(ColorReliefCli, MatchesGdaldemBitForBit) {
     }
 }
 
+TEST_F(ColorReliefCli, ShippedRampsRenderAsTheirFiles) {
+  REQUIRE_OR_SKIP(std::system("command -v gdaldem >/dev/null 2>&1") == 0, "gdaldem is not installed");
+  const std::string shared = SKYLIT_SHARED_DIR "/dem/";
+  REQUIRE_OR_SKIP(fs::exists(shared + "nice_monaco_coast_srtm3_4326.tif"), "../shared/dem is missing");
+  ASSERT_TRUE(crop(shared + "nice_monaco_coast_srtm3_4326.tif", "0 0 300 300", "nice.tif"));
+  for (const std::string ramp : {"hypsometric", "grey", "bathymetry"}) {
+    fs::copy_file(SKYLIT_SOURCE_DIR "/data/ramps/" + ramp + ".txt", dir / (ramp + ".txt"),
+                  fs::copy_options::overwrite_existing);
+    const fs::path by_name = dir / "n.tif";
+    const auto run = run_skylit("shade -q " + (dir / "nice.tif").string() + " -p color-relief --alpha --color " + ramp +
+                                " -o " + by_name.string() + " --overwrite", true);
+    ASSERT_EQ(run.status, 0) << run.out;
+    expect_same("nice.tif", ramp + ".txt", "-alpha", "--alpha");
+    int nb = 0, fb = 0;
+    EXPECT_EQ(read_bytes(by_name, nb), read_bytes(dir / "s.tif", fb)) << ramp;
+  }
+  const auto bad = run_skylit("shade -q " + (dir / "nice.tif").string() + " -p color-relief --color nope -o " +
+                              (dir / "x.tif").string(), true);
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("hypsometric, grey, bathymetry"), std::string::npos) << bad.out;
+  EXPECT_FALSE(fs::exists(dir / "x.tif"));
+}
+
 TEST_F(ColorReliefCli, BadLineNamesFileAndLine) {
   REQUIRE_OR_SKIP(std::system("command -v gdal_translate >/dev/null 2>&1") == 0, "gdal_translate is not installed");
   const std::string shared = SKYLIT_SHARED_DIR "/dem/";

@@ -18,6 +18,19 @@ struct DatasetCloser {
 };
 using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
 
+constexpr const char* kRampNames[] = {"hypsometric", "grey", "bathymetry"};
+
+// A file path as given, else a shipped ramp (data/ramps/NAME.txt of the source tree).
+std::string resolve_color_file(const std::string& name) {
+  if (std::filesystem::exists(name)) return name;
+  std::string names;
+  for (const char* r : kRampNames) {
+    if (name == r) return std::string(SKYLIT_DATA_DIR) + "/ramps/" + r + ".txt";
+    names += (names.empty() ? "" : ", ") + std::string(r);
+  }
+  throw std::invalid_argument("--color " + name + ": no such file, and no ramp of that name (" + names + ")");
+}
+
 }  // namespace
 
 int run_color_relief(const ColorReliefArgs& a) {
@@ -53,7 +66,7 @@ int run_color_relief(const ColorReliefArgs& a) {
     if (!(lo <= hi)) throw std::invalid_argument(a.input + " has no valid heights for a percentage");
     return std::pair(lo, hi);
   };
-  const relief::ColorTable table = relief::read_color_table(a.color_file, info);
+  const relief::ColorTable table = relief::read_color_table(resolve_color_file(a.color_file), info);
 
   const int nb = a.alpha ? 4 : 3;
   std::vector<std::uint8_t> out(static_cast<std::size_t>(nb) * w * h);

@@ -6,6 +6,7 @@
 #include "app/common/progress.h"
 #include "app/shade/color_relief_cmd.h"
 #include "app/shade/shade_output.h"
+#include "app/shade/tinted_relief.h"
 #include "app/shade/shade_series.h"
 #include "app/shade/sphere_input.h"
 #include "app/shade/tracked_aircraft.h"
@@ -62,6 +63,7 @@ struct ShadeArgs {
   unsigned threads = 0;
   bool quiet = false;
   bool overwrite = false;
+  std::string tint_blend = "soft-light";
   ColorReliefArgs color;  // -p color-relief: --color, --alpha, --exact/--nearest-color-entry
   bool compute_edges = true;
   bool timings = false;
@@ -310,6 +312,13 @@ int run_shade(const ShadeArgs& a) {
       std::cerr << "skylit: note: --spheres: " << a.product << " is the terrain's alone (spheres darken skyview, "
                 << "shaded, shadow and irradiance)\n";
   }
+  const bool tinted = !a.color.color_file.empty();
+  TintArgs tint_args{a.color.color_file};
+  if (tinted) {
+    if (*product != shading::Product::Shaded || times)
+      throw std::invalid_argument("--color tints -p shaded (one frame) or makes -p color-relief");
+    parse_tint_blend(a.tint_blend, tint_args);
+  }
   const auto read_start = std::chrono::steady_clock::now();
   const terrain::HeightField field = load_input(a);
   const std::vector<blockers::Sphere> spheres = to_field_frame(field, crs_spheres);
@@ -351,8 +360,9 @@ int run_shade(const ShadeArgs& a) {
   renderer->set_field(field);
   renderer->set_options(opt);
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  const auto bands =
+  auto bands =
       renderer->frame(*product, {opt.lighting, frame_spheres, std::nullopt}, [&](double f) { bar.update(f); });
+  if (tinted) bands = tint(bands, field, tint_args);
   bar.finish();
   if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
   const auto write_start = std::chrono::steady_clock::now();
@@ -486,6 +496,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
   cmd->add_option("--color", args->color.color_file, "Colour table (gdaldem color-relief syntax, .cpt) for -p color-relief");
+  cmd->add_option("--tint-blend", args->tint_blend,
+                  "-p shaded --color: multiply (colour as linear albedo) | soft-light[:W] (W3C, weight W, default 1)");
   cmd->add_flag("--alpha", args->color.alpha, "-p color-relief: add an alpha band (gdaldem -alpha)");
   cmd->add_flag_callback("--exact-color-entry", [args] { args->color.selection = relief::ColorSelection::ExactEntry; },
                          "-p color-relief: only exact table entries, else transparent black");

@@ -20,7 +20,8 @@ using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
 
 constexpr const char* kRampNames[] = {"hypsometric", "grey", "bathymetry"};
 
-// A file path as given, else a shipped ramp (data/ramps/NAME.txt of the source tree).
+}  // namespace
+
 std::string resolve_color_file(const std::string& name) {
   if (std::filesystem::exists(name)) return name;
   std::string names;
@@ -30,8 +31,6 @@ std::string resolve_color_file(const std::string& name) {
   }
   throw std::invalid_argument("--color " + name + ": no such file, and no ramp of that name (" + names + ")");
 }
-
-}  // namespace
 
 int run_color_relief(const ColorReliefArgs& a) {
   if (a.color_file.empty()) throw std::invalid_argument("-p color-relief needs --color FILE");

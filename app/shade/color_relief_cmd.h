@@ -17,6 +17,10 @@ struct ColorReliefArgs {
   relief::ColorSelection selection = relief::ColorSelection::Interpolate;
 };
 
+// A file path as given, else a shipped ramp (data/ramps/NAME.txt of the source tree);
+// throws std::invalid_argument listing the ramp names.
+std::string resolve_color_file(const std::string& name);
+
 // Throws std::invalid_argument / std::runtime_error; leaves no output file on failure.
 int run_color_relief(const ColorReliefArgs& args);
 

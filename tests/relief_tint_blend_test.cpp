@@ -1,0 +1,28 @@
+// The tint blends against hand-computed values of the W3C soft-light formula and the sRGB
+// decoding (IEC 61966-2-1).
+#include "shading/relief/tint_blend.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace skylit::relief;
+
+TEST(ReliefTintBlend, SoftLightAtHandPoints) {
+  for (const double c : {0.0, 0.1, 0.3, 0.7, 1.0}) EXPECT_DOUBLE_EQ(soft_light(c, 0.5), c);  // 0.5 leaves it
+  EXPECT_DOUBLE_EQ(soft_light(0.5, 0.0), 0.25);  // 0.5 − 1·0.5·0.5
+  EXPECT_DOUBLE_EQ(soft_light(0.2, 1.0), ((16 * 0.2 - 12) * 0.2 + 4) * 0.2);  // D(0.2) = 0.448
+  EXPECT_NEAR(soft_light(0.2, 1.0), 0.448, 1e-12);
+  EXPECT_DOUBLE_EQ(soft_light(0.64, 0.75), 0.64 + 0.5 * (0.8 - 0.64));  // sqrt(0.64) = 0.8
+  EXPECT_DOUBLE_EQ(soft_light_mix(0.5, 0.0, 0.4), 0.4 * 0.25 + 0.6 * 0.5);
+  EXPECT_DOUBLE_EQ(soft_light_mix(0.3, 0.9, 0.0), 0.3);
+}
+
+TEST(ReliefTintBlend, SrgbDecoding) {
+  EXPECT_DOUBLE_EQ(srgb_to_linear(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(srgb_to_linear(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(srgb_to_linear(0.04), 0.04 / 12.92);
+  EXPECT_NEAR(srgb_to_linear(0.5), 0.214041, 1e-6);  // the standard's mid-grey
+}
+
+}  // namespace

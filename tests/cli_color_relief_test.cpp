@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -122,6 +124,49 @@ TEST_F(ColorReliefCli, ShippedRampsRenderAsTheirFiles) {
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.out.find("hypsometric, grey, bathymetry"), std::string::npos) << bad.out;
   EXPECT_FALSE(fs::exists(dir / "x.tif"));
+}
+
+// Tinted relief = the formulas (written out here) applied to skylit's own grey `shaded` and
+// gdaldem's colour relief of the same DEM, per pixel, equal code values.
+TEST_F(ColorReliefCli, TintedReliefIsTheBlendOfShadedAndGdaldemColours) {
+  REQUIRE_OR_SKIP(std::system("command -v gdaldem >/dev/null 2>&1") == 0, "gdaldem is not installed");
+  const std::string shared = SKYLIT_SHARED_DIR "/dem/";
+  REQUIRE_OR_SKIP(fs::exists(shared + "pyrenees_andorra_srtm3_4326.tif"), "../shared/dem is missing");
+  ASSERT_TRUE(crop(shared + "pyrenees_andorra_srtm3_4326.tif", "100 100 120 120", "t.tif"));
+  const std::string ramp = SKYLIT_SOURCE_DIR "/data/ramps/bathymetry.txt";  // metres: no range coupling
+  const std::string src = (dir / "t.tif").string();
+  ASSERT_EQ(std::system(("gdaldem color-relief -q " + src + " " + ramp + " " + (dir / "c.tif").string()).c_str()), 0);
+  ASSERT_EQ(run_skylit("shade -q " + src + " -p shaded -o " + (dir / "g.tif").string()).status, 0);
+  int nc = 0, ng = 0, nm = 0, ns = 0;
+  const auto colour = read_bytes(dir / "c.tif", nc), grey = read_bytes(dir / "g.tif", ng);
+  ASSERT_EQ(run_skylit("shade -q " + src + " -p shaded --color " + ramp + " --tint-blend multiply -o " +
+                       (dir / "m.tif").string()).status, 0);
+  ASSERT_EQ(run_skylit("shade -q " + src + " -p shaded --color " + ramp + " --tint-blend soft-light:0.7 -o " +
+                       (dir / "s.tif").string()).status, 0);
+  const auto mul = read_bytes(dir / "m.tif", nm), soft = read_bytes(dir / "s.tif", ns);
+  ASSERT_EQ(ng, 1);
+  ASSERT_EQ(nm, 3);
+  ASSERT_EQ(ns, 3);
+  const std::size_t plane = grey.size();
+  const auto lin = [](double e) { return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4); };
+  const auto code = [](double x) {
+    x = std::clamp(x, 0.0, 1.0);
+    return 1.0 + std::round(254.0 * (x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055));
+  };
+  int checked = 0;
+  for (std::size_t k = 0; k < plane; ++k) {
+    if (grey[k] == 0) continue;  // nodata
+    const double g = (grey[k] - 1.0) / 254.0;
+    for (int b = 0; b < 3; ++b) {
+      const double c = colour[b * plane + k] / 255.0;
+      EXPECT_NEAR(mul[b * plane + k], code(lin(c) * lin(g)), 0.0) << k;
+      const double d = c <= 0.25 ? ((16 * c - 12) * c + 4) * c : std::sqrt(c);
+      const double sl = g <= 0.5 ? c - (1 - 2 * g) * c * (1 - c) : c + (2 * g - 1) * (d - c);
+      EXPECT_NEAR(soft[b * plane + k], code(lin(0.7 * sl + 0.3 * c)), 0.0) << k;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 3 * 100 * 100);
 }
 
 TEST_F(ColorReliefCli, BadLineNamesFileAndLine) {

@@ -4,9 +4,11 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/shade/color_relief_cmd.h"
 #include "app/shade/hillshade_args.h"
 #include "app/shade/max_error.h"
 #include "app/shade/shade_output.h"
+#include "app/shade/tinted_relief.h"
 #include "app/shade/shade_series.h"
 #include "app/shade/sphere_input.h"
 #include "app/shade/tracked_aircraft.h"
@@ -68,6 +70,8 @@ struct ShadeArgs {
   bool overwrite = false;
   bool compute_edges = false;  // horizon products always compute edges; local ones follow gdaldem
   HillshadeArgs hillshade;
+  std::string tint_blend = "soft-light";
+  ColorReliefArgs color;  // -p color-relief: --color, --alpha, --exact/--nearest-color-entry
   bool timings = false;
   shading::LightingRequest lighting;
   bool no_sun = false;
@@ -286,6 +290,14 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
 }
 
 int run_shade(const ShadeArgs& a) {
+  if (a.product == "color-relief") {
+    if (a.inputs.size() != 1) throw std::invalid_argument("-p color-relief takes one DEM");
+    ColorReliefArgs c = a.color;
+    c.input = a.inputs.front();
+    c.output = a.output;
+    c.overwrite = a.overwrite;
+    return run_color_relief(c);
+  }
   const auto summed = shading::parse_summed_product(a.product);
   const auto product = summed ? std::optional(shading::frame_product(*summed)) : shading::parse_product(a.product);
   if (!product)
@@ -318,6 +330,13 @@ int run_shade(const ShadeArgs& a) {
     if (!kind.blocked && !a.quiet)
       std::cerr << "skylit: note: --spheres: " << a.product << " is the terrain's alone (spheres darken skyview, "
                 << "shaded, shadow and irradiance)\n";
+  }
+  const bool tinted = !a.color.color_file.empty();
+  TintArgs tint_args{a.color.color_file};
+  if (tinted) {
+    if (*product != shading::Product::Shaded || times)
+      throw std::invalid_argument("--color tints -p shaded (one frame) or makes -p color-relief");
+    parse_tint_blend(a.tint_blend, tint_args);
   }
   const auto read_start = std::chrono::steady_clock::now();
   // Local products apply z inside their formula, as gdaldem does: heights stay unscaled.
@@ -365,8 +384,9 @@ int run_shade(const ShadeArgs& a) {
   renderer->set_field(field);
   renderer->set_options(opt);
   ProgressBar bar(std::string(shading::product_name(*product)), a.quiet);
-  const auto bands =
+  auto bands =
       renderer->frame(*product, {opt.lighting, frame_spheres, std::nullopt}, [&](double f) { bar.update(f); });
+  if (tinted) bands = tint(bands, field, tint_args);
   bar.finish();
   if (!a.quiet) std::cerr << "skylit: computed on " << renderer->description() << "\n";
   const auto write_start = std::chrono::steady_clock::now();
@@ -513,6 +533,14 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or warnings");
   cmd->add_flag("--timings", args->timings, "Print the wall time of each stage (read, GPU set-up, pyramid, march, ..., write) to stderr");
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
+  cmd->add_option("--color", args->color.color_file, "Colour table (gdaldem color-relief syntax, .cpt) for -p color-relief");
+  cmd->add_option("--tint-blend", args->tint_blend,
+                  "-p shaded --color: multiply (colour as linear albedo) | soft-light[:W] (W3C, weight W, default 1)");
+  cmd->add_flag("--alpha", args->color.alpha, "-p color-relief: add an alpha band (gdaldem -alpha)");
+  cmd->add_flag_callback("--exact-color-entry", [args] { args->color.selection = relief::ColorSelection::ExactEntry; },
+                         "-p color-relief: only exact table entries, else transparent black");
+  cmd->add_flag_callback("--nearest-color-entry", [args] { args->color.selection = relief::ColorSelection::NearestEntry; },
+                         "-p color-relief: the nearest table entry, no interpolation");
   cmd->callback([&run, args, cmd] {
     // The preset sets the quality knobs the user did not give explicitly.
     shading::ProductOptions preset = args->options;

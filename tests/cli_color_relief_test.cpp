@@ -143,6 +143,9 @@ TEST_F(ColorReliefCli, TintedReliefIsTheBlendOfShadedAndGdaldemColours) {
                        (dir / "m.tif").string()).status, 0);
   ASSERT_EQ(run_skylit("shade -q " + src + " -p shaded --color " + ramp + " --tint-blend soft-light:0.7 -o " +
                        (dir / "s.tif").string()).status, 0);
+  ASSERT_EQ(run_skylit("shade -q " + src + " -p shaded --color " + ramp + " -o " + (dir / "d.tif").string()).status, 0);
+  int nd = 0;
+  const auto dflt = read_bytes(dir / "d.tif", nd);  // the default blend, multiply:0.75
   const auto mul = read_bytes(dir / "m.tif", nm), soft = read_bytes(dir / "s.tif", ns);
   ASSERT_EQ(ng, 1);
   ASSERT_EQ(nm, 3);
@@ -156,6 +159,7 @@ TEST_F(ColorReliefCli, TintedReliefIsTheBlendOfShadedAndGdaldemColours) {
     for (int b = 0; b < 3; ++b) {
       const double c = colour[b * plane + k] / 255.0;
       EXPECT_NEAR(mul[b * plane + k], code(c * g), 0.0) << k;
+      EXPECT_NEAR(dflt[b * plane + k], code(c * (0.25 + 0.75 * g)), 0.0) << k;
       const double d = c <= 0.25 ? ((16 * c - 12) * c + 4) * c : std::sqrt(c);
       const double sl = g <= 0.5 ? c - (1 - 2 * g) * c * (1 - c) : c + (2 * g - 1) * (d - c);
       EXPECT_NEAR(soft[b * plane + k], code(0.7 * sl + 0.3 * c), 0.0) << k;

@@ -70,7 +70,7 @@ struct ShadeArgs {
   bool overwrite = false;
   bool compute_edges = false;  // horizon products always compute edges; local ones follow gdaldem
   HillshadeArgs hillshade;
-  std::string tint_blend = "soft-light";
+  std::string tint_blend = "multiply:0.75";
   ColorReliefArgs color;  // -p color-relief: --color, --alpha, --exact/--nearest-color-entry
   bool timings = false;
   shading::LightingRequest lighting;
@@ -535,7 +535,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--overwrite", args->overwrite, "Replace OUTPUT if it exists");
   cmd->add_option("--color", args->color.color_file, "Colour table (gdaldem color-relief syntax, .cpt) for -p color-relief");
   cmd->add_option("--tint-blend", args->tint_blend,
-                  "-p shaded --color: multiply (colour as linear albedo) | soft-light[:W] (W3C, weight W, default 1)");
+                  "-p shaded --color: multiply[:W] (colour × relief at weight W, as a GIS layer's opacity) | soft-light[:W] (W3C)")
+      ->capture_default_str();
   cmd->add_flag("--alpha", args->color.alpha, "-p color-relief: add an alpha band (gdaldem -alpha)");
   cmd->add_flag_callback("--exact-color-entry", [args] { args->color.selection = relief::ColorSelection::ExactEntry; },
                          "-p color-relief: only exact table entries, else transparent black");

@@ -11,23 +11,23 @@
 namespace skylit::app::shade {
 
 void parse_tint_blend(const std::string& text, TintArgs& out) {
-  if (text == "multiply") {
-    out.blend = relief::TintBlend::Multiply;
-    return;
-  }
-  if (text.rfind("soft-light", 0) == 0) {
-    out.blend = relief::TintBlend::SoftLight;
-    if (text.size() == 10) return;
-    if (text[10] == ':') {
+  for (const auto& [name, blend] : {std::pair{std::string("multiply"), relief::TintBlend::Multiply},
+                                    std::pair{std::string("soft-light"), relief::TintBlend::SoftLight}}) {
+    if (text.rfind(name, 0) != 0) continue;
+    out.blend = blend;
+    out.weight = 1.0;
+    if (text.size() == name.size()) return;
+    if (text[name.size()] == ':') {
+      const char* start = text.c_str() + name.size() + 1;
       char* end = nullptr;
-      const double w = std::strtod(text.c_str() + 11, &end);
-      if (end != text.c_str() + 11 && *end == '\0' && w >= 0.0 && w <= 1.0) {
+      const double w = std::strtod(start, &end);
+      if (end != start && *end == '\0' && w >= 0.0 && w <= 1.0) {
         out.weight = w;
         return;
       }
     }
   }
-  throw std::invalid_argument("--tint-blend '" + text + "': expected multiply, soft-light or soft-light:W (0 ≤ W ≤ 1)");
+  throw std::invalid_argument("--tint-blend '" + text + "': expected multiply[:W] or soft-light[:W] (0 ≤ W ≤ 1)");
 }
 
 shading::ProductBands tint(const shading::ProductBands& shaded, const terrain::HeightField& field, const TintArgs& args) {
@@ -55,7 +55,7 @@ shading::ProductBands tint(const shading::ProductBands& shaded, const terrain::H
       const double shade = (v - 1.0) / 254.0;  // the relief as displayed: code values 1…255 (products.h)
       const double colour = c[b] / 255.0;
       const double blended = args.blend == relief::TintBlend::Multiply
-                                 ? colour * shade
+                                 ? relief::multiply_mix(colour, shade, args.weight)
                                  : relief::soft_light_mix(colour, shade, args.weight);
       out.data[b * plane + k] = static_cast<float>(1.0 + std::round(254.0 * std::clamp(blended, 0.0, 1.0)));
     }

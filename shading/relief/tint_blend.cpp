@@ -10,6 +10,8 @@ double soft_light(double cb, double cs) {
   return cb + (2.0 * cs - 1.0) * (d - cb);
 }
 
+double multiply_mix(double colour, double relief, double weight) { return colour * (1.0 - weight + weight * relief); }
+
 double soft_light_mix(double colour, double relief, double weight) {
   return weight * soft_light(colour, relief) + (1.0 - weight) * colour;
 }

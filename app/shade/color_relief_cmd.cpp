@@ -1,12 +1,14 @@
 #include "app/shade/color_relief_cmd.h"
 
+#include "terrain/raster_writer.h"
+
 #include <gdal_priv.h>
 
 #include <cmath>
 #include <filesystem>
-#include <iostream>
 #include <limits>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -75,23 +77,16 @@ int run_color_relief(const ColorReliefArgs& a) {
     for (int b = 0; b < nb; ++b) out[b * plane + k] = c[b];
   }
 
-  GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-  if (!gtiff) throw std::runtime_error("GDAL has no GTiff driver");
-  const std::string tmp = a.output + ".tmp-skylit";
-  {
-    Dataset dst(gtiff->Create(tmp.c_str(), w, h, nb, GDT_Byte, nullptr));
-    if (!dst) throw std::runtime_error("cannot create " + a.output);
-    double gt[6];
-    if (src->GetGeoTransform(gt) == CE_None) dst->SetGeoTransform(gt);
-    if (const OGRSpatialReference* srs = src->GetSpatialRef()) dst->SetSpatialRef(srs);
-    const CPLErr e = dst->RasterIO(GF_Write, 0, 0, w, h, out.data(), w, h, GDT_Byte, nb, nullptr, 0, 0, 0);
-    if (e != CE_None) {
-      dst.reset();
-      std::filesystem::remove(tmp);
-      throw std::runtime_error("cannot write " + a.output);
-    }
+  terrain::GeoReference georef;
+  georef.has_geotransform = src->GetGeoTransform(georef.geotransform.data()) == CE_None;
+  if (const OGRSpatialReference* srs = src->GetSpatialRef()) {
+    char* wkt = nullptr;
+    if (srs->exportToWkt(&wkt) == OGRERR_NONE && wkt) georef.crs_wkt = wkt;
+    CPLFree(wkt);
   }
-  std::filesystem::rename(tmp, a.output);
+  terrain::RasterWriteOptions options;
+  options.format = "GTiff";
+  terrain::write_raster(a.output, georef, w, h, nb, std::span<const std::uint8_t>(out), options);
   return 0;
 }
 

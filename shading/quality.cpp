@@ -51,8 +51,9 @@ QualitySettings quality_settings(Quality q) {
   return s;
 }
 
-void apply_quality(Quality q, ProductOptions& options) {
-  const QualitySettings s = quality_settings(q);
+void apply_quality(Quality q, ProductOptions& options) { apply_settings(quality_settings(q), options); }
+
+void apply_settings(const QualitySettings& s, ProductOptions& options) {
   options.march.azimuths = s.azimuths;
   options.march.k_v = s.k_v;
   options.march.level_offset = s.level_offset;

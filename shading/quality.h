@@ -38,6 +38,8 @@ QualitySettings quality_settings(Quality q);
 
 // Overwrites only the knobs above; every other option (distance, curvature, threads,
 // albedo, exposure, exact, …) is left as the caller set it.
+void apply_settings(const QualitySettings& s, ProductOptions& options);
+// apply_settings(quality_settings(q), options).
 void apply_quality(Quality q, ProductOptions& options);
 
 }  // namespace skylit::shading

@@ -114,17 +114,7 @@ FrontChoice pick_setting(const std::vector<FrontPoint>& front, Product product, 
 }
 
 void apply_front_point(const FrontPoint& p, ProductOptions& options) {
-  const QualitySettings& s = p.settings;
-  options.march.azimuths = s.azimuths;
-  options.march.k_v = s.k_v;
-  options.march.level_offset = s.level_offset;
-  horizon::set_level_sampling(options.march, s.levels);
-  options.march.smooth_max = s.smooth_max;
-  options.march.method = s.horizons;
-  options.march.sweep_near_steps = s.sweep_near_steps;
-  options.march.sweep_lines = s.sweep_lines;
-  options.shaded.sh_order = s.sh_order;
-  options.shaded.nlp_order = s.nlp_order;
+  apply_settings(p.settings, options);
   options.subsample = p.subsample;
   options.shaded.wedge = p.wedge;
 }

@@ -60,6 +60,8 @@ enum Binding : int {
   kSunSchedule = 13,
   kCoarseSigma = 14,
   kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
+  kSweepGamma = 17,  // horizon_sweep.comp on curved rows: Γ of the half rows, in double
+  kSweepRowDx = 18,  // and the rows' spacings in double
 };
 
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
@@ -198,8 +200,10 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
                 const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
   std::vector<horizon::SweepGeometry> geometry;
   int max_samples = 1;
+  const bool curved = !horizon::one_row_spacing(field);
+  const auto rows = curved ? std::make_shared<const horizon::RhumbRows>(field) : nullptr;
   for (const horizon::Heading& u : headings) {
-    geometry.push_back(horizon::sweep_geometry(field, u, o.sweep_lines));
+    geometry.push_back(horizon::sweep_geometry(field, u, o.sweep_lines, rows));
     max_samples = std::max(max_samples, geometry.back().samples);
   }
   const std::size_t per_line = static_cast<std::size_t>(max_samples) * 2 * sizeof(float);
@@ -219,8 +223,18 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
   textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
   far.clear(horizon::kFarCodeNone);
   far.bind_image(kFarImageUnit, false, true);
+  // Curved rows' tables in double (bound also when unused: the kernel declares them).
+  const std::vector<double> no_rows{0.0};
+  const std::vector<double>& gamma = curved ? rows->half_rows() : no_rows;
+  const std::vector<double>& row_dx = curved ? field.dx_per_row : no_rows;
+  const Buffer gamma_buffer = Buffer::from(std::span<const double>(gamma));
+  const Buffer row_dx_buffer = Buffer::from(std::span<const double>(row_dx));
+  gamma_buffer.bind_storage(kSweepGamma);
+  row_dx_buffer.bind_storage(kSweepRowDx);
   set_grid_uniforms(sweep, field);
   sweep.set_uniform("stride", lanes);
+  sweep.set_uniform("curved", curved ? 1 : 0);
+  sweep.set_uniform("d_ref", curved ? rows->d_ref() : 1.0);
   for (std::size_t k = 0; k < geometry.size(); ++k) {
     const horizon::SweepGeometry& g = geometry[k];
     sweep.set_uniform("band", static_cast<int>(k));
@@ -235,6 +249,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
     sweep.set_uniform("spacing_f", static_cast<float>(g.spacing()));
     sweep.set_uniform("r_d", g.r);
     sweep.set_uniform("c_low_d", g.c_low);
+    sweep.set_uniform("spacing_d", g.spacing());
     sweep.set_uniform("drop", static_cast<float>(o.curvature.drop_per_square_metre() * g.step_m * g.step_m));
     sweep.set_uniform("step_m", static_cast<float>(g.step_m));
     for (int first = 0; first < g.lines; first += lanes) {
@@ -360,7 +375,9 @@ struct GpuProductPipeline::Impl {
   // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE).
   // Compiled at first use.
   enum VisCache { kNoCache = 0, kKeepVis = 1, kReadVis = 2 };
-  std::optional<ComputeProgram> products[3][2];
+  // [cache][0: marched, 1: swept on one row spacing, 2: swept on curved rows (near
+  // steps by each row's spacing)].
+  std::optional<ComputeProgram> products[3][3];
   GlslDefines products_defines;
   std::optional<glm::vec3> products_sun_dir;  // lit: the sun's direction (unit, toward it)
   void set_products_sun(const ComputeProgram& p) const {
@@ -368,24 +385,26 @@ struct GpuProductPipeline::Impl {
     p.set_uniform("sun_dir", products_sun_dir->x, products_sun_dir->y, products_sun_dir->z);
     for (int c = 0; c < channels; ++c) p.set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(sun_dni[c]));
   }
-  const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept, VisCache cache = kNoCache) {
+  const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept, bool one_dx,
+                                        VisCache cache = kNoCache) {
     if (cache == kReadVis) swept = false;  // no horizons read
-    if (!products[cache][swept]) {
+    const int kind = swept ? (one_dx ? 1 : 2) : 0;
+    if (!products[cache][kind]) {
       GlslDefines d = products_defines;
       d.set("SWEPT", swept ? 1 : 0).set("VIS_CACHE", cache).set("VIS_BINDING", kVis);
       if (swept) {
         d.set("RAY_TEXTURES", 1)
-            .set("ONE_DX", 1)  // the sweep's fields have one row spacing
+            .set("ONE_DX", one_dx ? 1 : 0)
             .set("NEAR_STEPS", o.march.sweep_near_steps)
             .set("FAR_BINDING", kFar);
         add_far_code_defines(d);
       }
       const auto compile_start = Clock::now();
-      products[cache][swept].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
+      products[cache][kind].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
       compile_ms += ms_since(compile_start);
-      set_products_sun(*products[cache][swept]);
+      set_products_sun(*products[cache][kind]);
     }
-    return *products[cache][swept];
+    return *products[cache][kind];
   }
   // The kept visibility: SH_COEFFS floats per texel, coefficient-major, for the field
   // revision it was computed from (vis_valid).
@@ -429,7 +448,10 @@ struct GpuProductPipeline::Impl {
           .set("LINES_PER_TEXEL", m.sweep_lines)
           .set("SWEEP_LOCAL_SIZE", kSweepLocalSize)
           .set("HULL_IMAGE_UNIT", kHullImageUnit)
-          .set("FAR_IMAGE_UNIT", kFarImageUnit);
+          .set("FAR_IMAGE_UNIT", kFarImageUnit)
+          .set("GAMMA_BINDING", kSweepGamma)
+          .set("ROW_DX_D_BINDING", kSweepRowDx)
+          .set("DUE_EAST_SLOPE", horizon::kDueEastSlope);
       add_far_code_defines(d);
       const auto compile_start = Clock::now();
       sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
@@ -625,7 +647,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
   // The variant the options will most likely use now (compile time is reported apart);
   // the other at its first field.
   k.products_kernel(options, options.march.method == horizon::HorizonMethod::Sweep && !options.exact &&
-                                 options.subsample == 1);
+                                 options.subsample == 1, true);
 }
 
 GpuProductPipeline::~GpuProductPipeline() = default;
@@ -903,8 +925,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // length.
   const bool one_dx = !mOptions.exact && horizon::one_row_spacing(field);
   const ComputeProgram& products =
-      k.products_kernel(mOptions, sweep, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
-  if (keep) k.products_kernel(mOptions, false, Impl::kReadVis);  // compiled now: later frames only read
+      k.products_kernel(mOptions, sweep, one_dx, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
+  if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
   if (reuse || keep) k.vis.bind_storage(kVis);
   if (k.blockers) k.blockers->bind(products);
   if (sweep) {

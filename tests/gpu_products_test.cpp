@@ -175,8 +175,8 @@ TEST_F(GpuProductsTest, SwitchesBetweenOneAndPerRowSpacing) {
 
 // The sweep (shading/horizon/horizon_sweep.h: horizon_sweep.comp, surface_products.comp SWEPT) against
 // the reference's sweep: every product on a projected field with dx ≠ dy (both
-// dominant axes, all quadrants), near steps and lines varied; a geographic field and
-// sub-sampling fall back to the march in both.
+// dominant axes, all quadrants), near steps and lines varied; a geographic field (rhumb
+// lines); a field nearer a pole than the sweep takes falls back to the march in both.
 TEST_F(GpuProductsTest, SweepMatchesReference) {
   HeightField field = synthetic_field();
   field.dy = 21.0;  // rays of other slopes in texel units than with square texels
@@ -202,8 +202,13 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
   expect_product_matches(field, Product::Svf, o, "sweep K 7, 1 line");
   HeightField geographic = synthetic_scene(60, 52, 5);
   for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
-  ASSERT_FALSE(shading::uses_sweep(geographic, o));
-  expect_product_matches(geographic, Product::Horizon, o, "sweep asked, geographic: march");
+  ASSERT_TRUE(shading::uses_sweep(geographic, o));
+  for (Product p : {Product::Horizon, Product::Svf, Product::Shaded})
+    expect_product_matches(geographic, p, o, "sweep, geographic");
+  HeightField polar = geographic;
+  for (int j = 0; j < polar.height; ++j) polar.dx_per_row[j] = 24.0 - 0.4 * j;  // 24 … 3.6 m
+  ASSERT_FALSE(shading::uses_sweep(polar, o));
+  expect_product_matches(polar, Product::Horizon, o, "sweep asked, near a pole: march");
 }
 
 // The far-slope codes themselves, GPU (float) against the reference (double): both round
@@ -211,37 +216,49 @@ TEST_F(GpuProductsTest, SweepMatchesReference) {
 // the two roundings of the slope straddle a code boundary — by one code — and "none"
 // (no far sample) must agree exactly. Products compare within tolerances far wider than a
 // code (6e-5 rad), so only this test would see, say, rounding to nearest on the GPU.
+// Also on rows of several spacings (rhumb lines, shading/horizon/rhumb_rows.h), where the
+// kernel reads Γ and the spacings in double as the reference has them.
+// Also on rows of several spacings (rhumb lines, shading/horizon/rhumb_rows.h), where the
+// kernel reads Γ and the spacings in double as the reference has them; 32 headings put
+// lines of both signs of r on both dominant axes.
 TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
-  HeightField field = synthetic_field();
-  field.dy = 21.0;
-  ProductOptions o = default_options();
-  o.march.method = horizon::HorizonMethod::Sweep;
-  o.march.azimuths = 8;
-  const GpuProductPipeline pipeline(Product::Svf, o);
-  pipeline.compute(field);
-  const std::vector<std::uint16_t> gpu = pipeline.far_codes();
-  ASSERT_EQ(gpu.size(), field.size() * 8);
-  std::size_t equal = 0, finite = 0;
-  int worst = 0;
-  for (int k = 0; k < 8; ++k) {
-    const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, 8)),
-                                               o.march);
-    for (std::size_t t = 0; t < field.size(); ++t) {
-      const int g = gpu[k * field.size() + t], c = cpu[t];
-      if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
-        EXPECT_EQ(g, c) << "band " << k << " texel " << t;
-        continue;
+  HeightField projected = synthetic_field();
+  projected.dy = 21.0;
+  HeightField geographic = projected;
+  for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
+  for (const HeightField* f : {&projected, &geographic}) {
+    const HeightField& field = *f;
+    const char* what = f == &projected ? "projected" : "geographic";
+    const int w = f == &projected ? 8 : 32;
+    ProductOptions o = default_options();
+    o.march.method = horizon::HorizonMethod::Sweep;
+    o.march.azimuths = w;
+    const GpuProductPipeline pipeline(Product::Svf, o);
+    pipeline.compute(field);
+    const std::vector<std::uint16_t> gpu = pipeline.far_codes();
+    ASSERT_EQ(gpu.size(), field.size() * w);
+    std::size_t equal = 0, finite = 0;
+    int worst = 0;
+    for (int k = 0; k < w; ++k) {
+      const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, w)),
+                                                 o.march);
+      for (std::size_t t = 0; t < field.size(); ++t) {
+        const int g = gpu[k * field.size() + t], c = cpu[t];
+        if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
+          EXPECT_EQ(g, c) << what << " band " << k << " texel " << t;
+          continue;
+        }
+        ++finite;
+        equal += g == c;
+        worst = std::max(worst, std::abs(g - c));
       }
-      ++finite;
-      equal += g == c;
-      worst = std::max(worst, std::abs(g - c));
     }
+    std::cout << "[ far codes ] " << what << ": " << finite << " finite, " << 100.0 * equal / finite
+              << "% equal, worst " << worst << " code(s)\n";
+    EXPECT_GT(finite, field.size() * w / 2) << what;  // most texels have a far field
+    EXPECT_LE(worst, 1) << what;
+    EXPECT_GE(equal, 0.98 * finite) << what;  // observed 99.8 %: float slopes err by ~1e-6, a code is 3e-5 of x
   }
-  std::cout << "[ far codes ] " << finite << " finite, " << 100.0 * equal / finite << "% equal, worst " << worst
-            << " code(s)\n";
-  EXPECT_GT(finite, field.size() * 4);  // most texels have a far field
-  EXPECT_LE(worst, 1);
-  EXPECT_GE(equal, 0.98 * finite);  // observed 99.8 %: float slopes err by ~1e-6, a code is 3e-5 of x
 }
 
 // A sweep line holds 2·side − 1 samples in an image column: past GL_MAX_TEXTURE_SIZE the

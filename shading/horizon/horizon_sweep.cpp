@@ -16,34 +16,48 @@ bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& o) 
 }
 
 std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& o) {
-  if (!one_row_spacing(field)) return "the rows' spacings differ (a geographic grid)";
+  const auto [lo, hi] = std::minmax_element(field.dx_per_row.begin(), field.dx_per_row.end());
+  char text[160];
+  if (*hi > kMaxRowSpacingRatio * *lo) {
+    std::snprintf(text, sizeof text, "the rows' east–west spacings differ more than %g× (%.3g … %.3g m: near a pole)",
+                  kMaxRowSpacingRatio, *lo, *hi);
+    return text;
+  }
   if (o.max_distance_m <= 0.0) return "";  // the DEM extent
-  const double diagonal = std::hypot((field.width - 1) * field.dx(0), (field.height - 1) * field.dy);
+  const double diagonal = std::hypot((field.width - 1) * *hi, (field.height - 1) * field.dy);
   if (o.max_distance_m >= diagonal) return "";
-  char text[128];
   std::snprintf(text, sizeof text, "the maximum distance %g m is below the DEM's diagonal %.1f m", o.max_distance_m,
                 diagonal);
   return text;
 }
 
-int SweepGeometry::owner(double a, double b) const {
-  return static_cast<int>(std::floor((b - r * a - c_low) * lines_per_texel + 0.5));
+double SweepGeometry::line_c(double a, double b) const {
+  if (!curved()) return b - r * a;
+  return x_dominant ? rows->gamma(b) - r * a : b - r * rows->gamma(a);
 }
 
-SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel) {
+int SweepGeometry::owner(double a, double b) const {
+  return static_cast<int>(std::floor((line_c(a, b) - c_low) * lines_per_texel + 0.5));
+}
+
+SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel,
+                             std::shared_ptr<const RhumbRows> rows) {
   SweepGeometry g;
-  const double ex = u.east / field.dx(0), ey = -u.north / field.dy;  // texels per metre along u
+  if (!one_row_spacing(field)) g.rows = rows ? std::move(rows) : std::make_shared<const RhumbRows>(field);
+  const double dx = g.curved() ? g.rows->d_ref() : field.dx(0);
+  const double ex = u.east / dx, ey = -u.north / field.dy;  // texels per metre along u
   g.x_dominant = std::abs(ex) >= std::abs(ey);
   const double ea = g.x_dominant ? ex : ey, eb = g.x_dominant ? ey : ex;
-  g.step_m = exact_step_length(field, 0, u, 0.5);
+  g.step_m = g.curved() ? 0.5 / std::max(std::abs(ex), std::abs(ey)) : exact_step_length(field, 0, u, 0.5);
   g.delta_a = ea > 0.0 ? 0.5 : -0.5;
   g.r = eb / ea;
   g.extent_a = g.x_dominant ? field.width : field.height;
   g.extent_b = g.x_dominant ? field.height : field.width;
   g.samples = 2 * (g.extent_a - 1) + 1;
   g.lines_per_texel = lines_per_texel;
-  // c = b − r·a over the grid's corners, with a line of margin on each side.
-  const double a1 = g.extent_a - 1.0, b1 = g.extent_b - 1.0;
+  // c = b − r·a over the grid's corners (the row axis in Γ), with a line of margin on each side.
+  double a1 = g.extent_a - 1.0, b1 = g.extent_b - 1.0;
+  if (g.curved()) (g.x_dominant ? b1 : a1) = g.rows->last();
   const double c_min = std::min({0.0, -g.r * a1, b1, b1 - g.r * a1});
   const double c_max = std::max({0.0, -g.r * a1, b1, b1 - g.r * a1});
   g.c_low = c_min - g.spacing();
@@ -96,34 +110,77 @@ float decode_far_slope(std::uint16_t code) {
   return static_cast<float>(x / (1.0 - std::abs(x)));
 }
 
+namespace {
+
+// Sample n of line c: its cross coordinate b (texels) and its position p along the line
+// in steps of step_m (the hull's abscissa; p = n unless the columns lead on a curved grid).
+struct LineSamples {
+  std::vector<double> b, p;
+};
+
+void fill_line(const SweepGeometry& g, double c, LineSamples& out) {
+  out.b.resize(g.samples);
+  out.p.resize(g.samples);
+  for (int n = 0; n < g.samples; ++n) out.p[n] = n;
+  if (!g.curved()) {
+    for (int n = 0; n < g.samples; ++n) out.b[n] = c + g.r * g.a_at(n);
+    return;
+  }
+  const RhumbRows& rows = *g.rows;
+  if (!g.x_dominant) {  // samples on half rows: Γ from the table, b = c + r·Γ(a)
+    const std::vector<double>& half = rows.half_rows();
+    for (int n = 0; n < g.samples; ++n) out.b[n] = c + g.r * half[static_cast<std::size_t>(2.0 * g.a_at(n))];
+    return;
+  }
+  // Samples on half columns: b = Γ⁻¹(c + r·a). Along the line dΓ = D_ref·dy/D, so the
+  // east metres are ∫D dx = D_ref·Δy/r and the position p = s/step_m = Δy/(r·δ_a), exact
+  // for the rows' linear spacing; within 1e-6 of due east the line keeps its row and
+  // p = n·D(b₀)/D_ref (the neglected change of D is below 1e-6·W rows).
+  int segment = 0;
+  for (int n = 0; n < g.samples; ++n) out.b[n] = rows.row(c + g.r * g.a_at(n), segment);
+  if (std::abs(g.r) < kDueEastSlope) {
+    const double scale = rows.dx(out.b[0]) / rows.d_ref();
+    for (int n = 0; n < g.samples; ++n) out.p[n] = n * scale;
+    return;
+  }
+  for (int n = 0; n < g.samples; ++n) out.p[n] = (out.b[n] - out.b[0]) / (g.r * g.delta_a);
+}
+
+}  // namespace
+
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o) {
   validate(o);
-  if (!sweep_applicable(field, o)) throw std::invalid_argument("sweep: needs rows of one spacing and D ≥ the DEM");
+  if (const std::string why = sweep_inapplicable_reason(field, o); !why.empty())
+    throw std::invalid_argument("sweep: " + why);
   const SweepGeometry g = sweep_geometry(field, u, o.sweep_lines);
   const double drop = o.curvature.drop_per_square_metre() * g.step_m * g.step_m;  // per step²
   const double eps = edge_epsilon_texels(field);
   const int delay = o.sweep_near_steps + 1;
   std::vector<std::uint16_t> far(field.size(), kFarCodeNone);
   Hull hull;
+  LineSamples line_samples;
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
   for (int line = 0; line < g.lines; ++line) {
     const double c = g.c_low + line * g.spacing();
+    fill_line(g, c, line_samples);
+    const std::vector<double>&bs = line_samples.b, &ps = line_samples.p;
     hull.clear();
     for (int n = g.samples - 1; n >= 0; --n) {
       // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).
       if (const int m = n + delay; m < g.samples) {
-        const double a = g.a_at(m), b = c + g.r * a;
-        if (b >= -eps && b <= g.extent_b - 1 + eps) hull.push(m, bilinear_height(field, point(a, b)) - m * drop * m);
+        const double b = bs[m];
+        if (b >= -eps && b <= g.extent_b - 1 + eps)
+          hull.push(ps[m], bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m]);
       }
       if (n % 2 != 0) continue;  // observers sit on whole texels of a
-      const double a = g.a_at(n), b = c + g.r * a;
+      const double a = g.a_at(n), b = bs[n], pn = ps[n];
       for (const double jb : {std::floor(b), std::ceil(b)}) {
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
-        const GridPoint p = point(a, jb);
-        const int i = static_cast<int>(p.x), j = static_cast<int>(p.y);
-        // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·n·drop/step_m.
-        const double slope = hull.max_slope(n, field.at(i, j) - n * drop * n);
-        far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * n * drop) / g.step_m);
+        const GridPoint q = point(a, jb);
+        const int i = static_cast<int>(q.x), j = static_cast<int>(q.y);
+        // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
+        const double slope = hull.max_slope(pn, field.at(i, j) - pn * drop * pn);
+        far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
       }
     }
   }

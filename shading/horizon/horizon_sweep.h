@@ -21,9 +21,18 @@
 // texel's own ray, as the exact march takes them; a ray that leaves the grid among them
 // ends there (no far field), as in the exact march.
 //
-// Needs rows of one spacing (projected grids; geographic rows bend the rays in texel
-// units) and a maximum distance covering the DEM (the hull holds every farther sample):
-// sweep_applicable says when; elsewhere callers march. Cost per azimuth: about
+// On a geographic grid (rows of different spacing) the rays are rhumb lines, which in
+// the stretched row coordinate Γ of rhumb_rows.h are straight lines of one slope r per
+// heading: b = c + r·Γ(a) when the rows are the dominant axis, Γ(b) = c + r·a when the
+// columns are, so the same lines, hulls and owners apply with Γ in place of the row.
+// Samples stay on the dominant axis's half texels; along columns their spacing in metres
+// follows D(y) (the hull holds positions p in reference steps, p = n on rows and on
+// projected grids). The owner line is within Δc/2 of the texel in Γ, i.e. within
+// Δc/2·D/D_ref rows.
+//
+// Needs the maximum distance to cover the DEM (the hull holds every farther sample) and
+// rows whose spacings differ by less than kMaxRowSpacingRatio (nearer a pole the march is
+// used): sweep_applicable says when; elsewhere callers march. Cost per azimuth: about
 // 2·sweep_lines·(1 + |r|)·N² samples, each pushed once, and one hull walk per texel.
 #pragma once
 
@@ -31,17 +40,28 @@
 #include "shading/horizon/horizon_march.h"
 #include "terrain/height_field.h"
 
+#include "shading/horizon/rhumb_rows.h"
+
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace skylit::horizon {
 
-// True when every row has the same spacing and the maximum distance reaches every
-// texel from every other (MarchOptions::sweep_near_steps, sweep_lines: see there).
+// Largest ratio of the rows' spacings the sweep takes: 2 spans 60° N … 75° N, or any
+// 1° tile south of 88.5° N; nearer a pole the metric grid of horizon_ray.h breaks down.
+inline constexpr double kMaxRowSpacingRatio = 2.0;
+// |r| below which a curved line led by columns counts as due east (its positions along
+// the line then come from its row's spacing; horizon_sweep.cpp).
+inline constexpr double kDueEastSlope = 1e-6;
+
+// True when the rows' spacings stay within kMaxRowSpacingRatio and the maximum distance
+// reaches every texel from every other (MarchOptions::sweep_near_steps, sweep_lines:
+// see there).
 bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& options);
-// Why it is false, for messages ("" when it applies): the rows' spacings differ, or
-// the maximum distance is below the diagonal between the corner texels.
+// Why it is false, for messages ("" when it applies): the rows' spacings differ too much,
+// or the maximum distance is below the diagonal between the corner texels.
 std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& options);
 
 // Geometry of the sweep lines of one heading (texel units), shared with the GPU.
@@ -49,22 +69,30 @@ struct SweepGeometry {
   bool x_dominant = true;  // a = column (x) if true, else row (y)
   double step_m = 0.0;     // metric length of one half-texel step (exact_step_length)
   double delta_a = 0.5;    // ±0.5: the dominant-axis texels per step, toward the blockers
-  double r = 0.0;          // b per unit a along the ray
+  double r = 0.0;          // b per unit a along the ray (in Γ for the row axis: curved)
   int extent_a = 0, extent_b = 0;  // texels along a and b
   int samples = 0;         // M = 2(extent_a − 1) + 1 samples per line, a on half texels
   double c_low = 0.0;      // c of line 0
   int lines_per_texel = 2;
   double spacing() const { return 1.0 / lines_per_texel; }  // Δc between lines
   int lines = 0;
+  // Rows of different spacing (rhumb_rows.h); null on one spacing (Γ = y).
+  std::shared_ptr<const RhumbRows> rows;
+  bool curved() const { return rows != nullptr; }
   // Dominant-axis coordinate of sample n of a line (n = 0 at the grid's upwind edge).
   double a_at(int n) const { return (delta_a > 0.0 ? 0.0 : extent_a - 1.0) + n * delta_a; }
   // The line a texel (whole a, b) takes its far field from: the nearest, ties to the
   // higher c: ⌊(b − r·a − c_low)·lines_per_texel + ½⌋ in double, one multiply and adds
-  // (correctly rounded on every GPU), so the GLSL twin picks the same line.
+  // (correctly rounded on every GPU), so the GLSL twin picks the same line. Curved: the
+  // row coordinate is Γ, from RhumbRows::half_rows (the GPU reads the same doubles).
   int owner(double a, double b) const;
+  // c of the line through texel coordinates (a, b), before rounding to a line.
+  double line_c(double a, double b) const;
 };
 
-SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel);
+// `rows`: the field's RhumbRows when its rows' spacings differ (made here when null).
+SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int lines_per_texel,
+                             std::shared_ptr<const RhumbRows> rows = nullptr);
 
 // The far slopes are stored in 16 bits per texel and heading, on the CPU as on the GPU:
 // half a float array's memory, which is W layers of the whole field (and dear to touch

@@ -91,6 +91,9 @@ DemReadResult read_dem(const std::vector<std::string>& paths, const DemReadOptio
 DemInfo inspect_dem(const std::string& path);
 DemInfo inspect_dem(const std::vector<std::string>& paths);
 
+// Geographic DEMs reaching nearer a pole than this are refused with a clear error.
+inline constexpr double kMaxGeographicLatitudeDeg = 89.0;
+
 struct MetricSpacing {
   double dy = 1.0;                 // metres
   std::vector<double> dx_per_row;  // metres, one per row (row 0 = north)

@@ -52,6 +52,13 @@ MetricSpacing crs_spacing(const GeoReference& georef, int rows, std::vector<std:
       throw DemError("geographic CRS but latitudes " + fmt(lat_top) + "…" + fmt(lat_bottom) +
                      " exceed ±90°; the geotransform is not in degrees");
     const double lat_max = std::min(90.0, std::max(std::abs(lat_top), std::abs(lat_bottom)));
+    // Within a degree of a pole the rows' spacing falls toward 0 and rays cross the pole:
+    // a grid of local east–west and north–south steps no longer describes the ground.
+    if (lat_max > kMaxGeographicLatitudeDeg)
+      throw DemError("the DEM reaches latitude " + fmt(lat_max) + "°, within " +
+                     fmt(90.0 - kMaxGeographicLatitudeDeg) +
+                     "° of the pole, where a geographic grid has no usable east–west spacing; reproject it "
+                     "to a polar stereographic CRS first (gdalwarp -t_srs EPSG:3413 north, EPSG:3031 south)");
     // One pixel north–south: the meridian arc of the whole extent, shared evenly.
     out.dy = std::abs(ell.MeridianDistance(std::clamp(lat_top, -90.0, 90.0)) -
                       ell.MeridianDistance(std::clamp(lat_bottom, -90.0, 90.0))) / rows;

@@ -141,6 +141,40 @@ TEST(TerrainReader, RotatedGeotransform) {
   EXPECT_TRUE(contains(m, "rotated")) << m;
 }
 
+// Geographic grids at the poles and across the antimeridian: within a degree of a pole a
+// clear error (no silent result on a degenerate grid), up to it spacings by cos φ; a
+// grid running past 180° E is one continuous grid, its spacing that of its latitudes.
+TEST(TerrainReader, GeographicPolesAndAntimeridian) {
+  ScratchDir dir;
+  RasterSpec s;
+  s.epsg = 4326;
+  s.width = s.height = 8;
+  s.gt = {10.0, 0.1, 0, 89.5, 0, -0.1};  // 89.5° … 88.7° N
+  make_raster(dir.file("north.tif"), s);
+  auto m = error_of([&] { read_dem(dir.file("north.tif")); });
+  EXPECT_TRUE(contains(m, "within 1° of the pole")) << m;
+  EXPECT_TRUE(contains(m, "EPSG:3413")) << m;
+  s.gt = {10.0, 0.1, 0, -89.2, 0, -0.1};  // south of 89.2° S
+  make_raster(dir.file("south.tif"), s);
+  m = error_of([&] { read_dem(dir.file("south.tif")); });
+  EXPECT_TRUE(contains(m, "pole")) << m;
+  s.gt = {10.0, 0.1, 0, 88.9, 0, -0.1};  // 88.9° … 88.1° N: read, with the warning
+  make_raster(dir.file("near.tif"), s);
+  const auto near = read_dem(dir.file("near.tif"));
+  EXPECT_FALSE(near.warnings.empty());
+  // dx ∝ cos φ of each row's centre on the WGS 84 parallel (to 0.5 % on the sphere).
+  const double ratio = near.field.dx(7) / near.field.dx(0);
+  EXPECT_NEAR(ratio, std::cos((88.9 - 0.75) * M_PI / 180) / std::cos((88.9 - 0.05) * M_PI / 180), 5e-3 * ratio);
+  s.gt = {179.6, 0.1, 0, 45.4, 0, -0.1};  // 179.6° E … 180.4° E
+  make_raster(dir.file("dateline.tif"), s);
+  const auto across = read_dem(dir.file("dateline.tif"));
+  s.gt = {-0.4, 0.1, 0, 45.4, 0, -0.1};  // the same latitudes at Greenwich
+  make_raster(dir.file("greenwich.tif"), s);
+  const auto greenwich = read_dem(dir.file("greenwich.tif"));
+  for (int j = 0; j < 8; ++j) EXPECT_DOUBLE_EQ(across.field.dx(j), greenwich.field.dx(j)) << j;
+  EXPECT_DOUBLE_EQ(across.field.dy, greenwich.field.dy);
+}
+
 TEST(TerrainReader, UnknownCrsNeedsScale) {
   ScratchDir dir;
   RasterSpec s;

@@ -121,6 +121,32 @@ TEST(CliHillshade, BandNodataAndAnyDriver) {
                              "unknown output format 'NoSuchDriver'");
 }
 
+// --xscale/--yscale (gdaldem ≥ 3.11; Debian's 3.6 has only -s): equal scales are -s, and
+// an east–west scale of 2 equals gdaldem on the same heights with pixels twice as wide.
+TEST(CliHillshade, AxisScalesEqualGdaldemOnStretchedPixels) {
+  REQUIRE_GDALDEM();
+  ScratchDir dir;
+  const auto at = [&](const std::string& n) { return (dir.path() / n).string(); };
+  ASSERT_EQ(sh("gdal_translate -q -srcwin 200 200 150 120 " + shared_dem("pyrenees_andorra_srtm3_4326.tif") + " " +
+               at("geo.tif")),
+            0);
+  ASSERT_EQ(sh("gdaldem hillshade -q -s 111120 " + at("geo.tif") + " " + at("ref_s.tif")), 0);
+  auto r = run_skylit("shade " + at("geo.tif") + " --xscale 111120 --yscale 111120 -p hillshade -q -o " + at("xy.tif"),
+                      true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(differing_pixels(read_output(at("ref_s.tif")), read_output(at("xy.tif"))), 0);
+  // A projected crop (1 m lidar) and the same heights on 2 m × 1 m pixels.
+  ASSERT_EQ(sh("gdal_translate -q -srcwin 300 300 160 140 " + shared_dem("slovenia_lidar1m_d96tm.tif") + " " +
+               at("m.tif")),
+            0);
+  ASSERT_EQ(sh("gdal_translate -q -a_ullr 0 140 320 0 " + at("m.tif") + " " + at("wide.tif")), 0);
+  ASSERT_EQ(sh("gdaldem hillshade -q -compute_edges " + at("wide.tif") + " " + at("ref_wide.tif")), 0);
+  r = run_skylit("shade " + at("m.tif") + " --xscale 2 --yscale 1 -compute_edges -p hillshade -q -o " + at("x2.tif"),
+                 true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(differing_pixels(read_output(at("ref_wide.tif")), read_output(at("x2.tif"))), 0);
+}
+
 TEST(CliHillshade, RejectsTwoVariantsInOneLine) {
   ScratchDir dir;
   expect_clean_shade_failure(dir, "--synthetic --size 16 -p hillshade -combined -igor -o " +

@@ -198,7 +198,8 @@ TEST_F(GpuLightingTest, IrradianceAndLitShadedMatchReference) {
 }
 
 // The sweep (shading::SunHorizon::Swept for the sun, the sky's sweep for the sky) on the
-// projected synthetic field; the geographic crop marches the sun in both.
+// projected synthetic field and (where ../shared is present) a geographic crop, whose
+// rhumb-line sweep both run.
 TEST_F(GpuLightingTest, SweptSunAndSkyMatchReference) {
   const Fields f;
   for (double elevation : {10.0, 45.0}) {

@@ -19,7 +19,10 @@ namespace {
 
 // A 24×20 rough DEM (a hill plus a hashed bumpiness, so that rays of neighbouring
 // lines see different heights), 30 m pixels: projected (UTM 11N) or geographic.
-std::string make_dem(const ScratchDir& dir, bool geographic) {
+// Projected (UTM), geographic at 46° N, or geographic from 88.9° to 86.0° N (row spacings
+// 3.4× apart: nearer a pole than the sweep takes).
+enum class Grid { Projected, Geographic, NearPole };
+std::string make_dem(const ScratchDir& dir, Grid grid) {
   RasterSpec s;
   s.width = 24;
   s.height = 20;
@@ -27,11 +30,11 @@ std::string make_dem(const ScratchDir& dir, bool geographic) {
     for (int i = 0; i < 24; ++i)
       s.values.push_back(500 + 300 * std::exp(-((i - 12) * (i - 12) + (j - 10) * (j - 10)) / 20.0) +
                          ((i * 7919 + j * 104729) % 97));
-  if (geographic) {
-    s.epsg = 4326;
-    s.gt = {-120.0, 0.0003, 0, 46.0, 0, -0.0003};
-  }
-  return make_raster(dir.file(geographic ? "geo.tif" : "utm.tif"), s);
+  if (grid != Grid::Projected) s.epsg = 4326;
+  if (grid == Grid::Geographic) s.gt = {-120.0, 0.0003, 0, 46.0, 0, -0.0003};
+  if (grid == Grid::NearPole) s.gt = {-120.0, 0.1, 0, 88.9, 0, -0.145};
+  const char* names[] = {"utm.tif", "geo.tif", "polar.tif"};
+  return make_raster(dir.file(names[static_cast<int>(grid)]), s);
 }
 
 struct Shade {
@@ -55,7 +58,7 @@ int notes(const std::string& log) {
 
 TEST(CliHorizons, SweepRunsWhereItAppliesAndExplicitFlagsWin) {
   ScratchDir dir;
-  const std::string in = make_dem(dir, false);
+  const std::string in = make_dem(dir, Grid::Projected);
   const Shade march = shade(dir, in, "--horizons march"), sweep = shade(dir, in, "--horizons sweep");
   EXPECT_EQ(notes(sweep.log), 0) << sweep.log;
   EXPECT_NE(march.v, sweep.v);
@@ -70,11 +73,11 @@ TEST(CliHorizons, SweepRunsWhereItAppliesAndExplicitFlagsWin) {
 
 TEST(CliHorizons, OneNoteSaysWhyTheMarchRunsInstead) {
   ScratchDir dir;
-  const std::string utm = make_dem(dir, false), geo = make_dem(dir, true);
+  const std::string utm = make_dem(dir, Grid::Projected), polar = make_dem(dir, Grid::NearPole);
   struct Case {
     std::string in, extra, why;
   };
-  for (const Case& c : {Case{geo, "", "geographic"}, Case{utm, "--max-distance 300", "maximum distance"},
+  for (const Case& c : {Case{polar, "", "near a pole"}, Case{utm, "--max-distance 300", "maximum distance"},
                         Case{utm, "--subsample 2", "--subsample 2"}, Case{utm, "--exact", "exact march"}}) {
     const Shade s = shade(dir, c.in, "--horizons sweep " + c.extra);
     EXPECT_EQ(notes(s.log), 1) << c.extra << "\n" << s.log;
@@ -83,12 +86,18 @@ TEST(CliHorizons, OneNoteSaysWhyTheMarchRunsInstead) {
     EXPECT_EQ(notes(shade(dir, c.in, c.extra).log), 0) << c.extra;  // the default sweep falls back quietly
   }
   EXPECT_EQ(notes(shade(dir, utm, "--horizons sweep -q").log), 0);
-  EXPECT_EQ(notes(shade(dir, geo, "--horizons march").log), 0);  // no sweep asked for
+  EXPECT_EQ(notes(shade(dir, polar, "--horizons march").log), 0);  // no sweep asked for
+  // A geographic grid at 46° N sweeps along its rhumb lines: no note, not the march.
+  const std::string geo = make_dem(dir, Grid::Geographic);
+  const Shade swept = shade(dir, geo, "--horizons sweep");
+  EXPECT_EQ(notes(swept.log), 0) << swept.log;
+  EXPECT_NE(swept.v, shade(dir, geo, "--horizons march").v);
+  EXPECT_EQ(swept.v, shade(dir, geo, "").v);
 }
 
 TEST(CliHorizons, BadValuesFailCleanly) {
   ScratchDir dir;
-  const std::string in = make_dem(dir, false) + " -o " + dir.file("x.tif");
+  const std::string in = make_dem(dir, Grid::Projected) + " -o " + dir.file("x.tif");
   expect_clean_shade_failure(dir, in + " --horizons spiral", "--horizons");
   expect_clean_shade_failure(dir, in + " --sweep-lines 0", "--sweep-lines");
   expect_clean_shade_failure(dir, in + " --near-steps -1", "--near-steps");

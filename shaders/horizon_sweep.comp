@@ -11,8 +11,8 @@
 // (horizon::encode_far_slope; FAR_CODE_NONE: none).
 //
 // On rows of several spacings (curved: geographic grids) the lines are straight in the
-// stretched row coordinate Γ (shading/horizon/rhumb_rows.h): b = c + r*Γ(a) when rows
-// lead, Γ(b) = c + r*a when columns lead, with Γ and the row spacings in double as the
+// stretched row coordinate Gamma (shading/horizon/rhumb_rows.h): b = c + r*Gamma(a) when rows
+// lead, Gamma(b) = c + r*a when columns lead, with Gamma and the row spacings in double as the
 // CPU has them, and positions p along the line in place of n (fill_line in
 // horizon_sweep.cpp).
 //
@@ -45,7 +45,7 @@ uniform float step_m;
 uniform int curved;        // 1: rows of several spacings (the buffers below are bound)
 uniform double d_ref;      // curved: the rows' mean spacing (m)
 uniform double spacing_d;  // curved: line spacing in double
-layout(std430, binding = GAMMA_BINDING) readonly buffer HalfRowGamma { double gamma_half[]; };  // Γ(k/2)
+layout(std430, binding = GAMMA_BINDING) readonly buffer HalfRowGamma { double gamma_half[]; };  // Gamma(k/2)
 layout(std430, binding = ROW_DX_D_BINDING) readonly buffer RowDxDouble { double row_dx_d[]; };    // m
 
 // RhumbRows::dx: the spacing at fractional row y, linear between rows, clamped.
@@ -57,8 +57,8 @@ double rowDxD(double y) {
   return (1.0lf - t) * row_dx_d[j0] + t * row_dx_d[j1];
 }
 
-// RhumbRows::row: the row where Γ = g; seg < 0: unknown (bisection), else a row hint
-// within a row or two (each front moves ≤ 2 samples, ≤ 1.1 rows, between calls). Loops
+// RhumbRows::row: the row where Gamma = g; seg < 0: unknown (bisection), else a row hint
+// within a row or two (each front moves <= 2 samples, <= 1.1 rows, between calls). Loops
 // over double compares run a fixed count: with lane-dependent trip counts llvmpipe
 // (Mesa 22.3, LLVM 15) returned wrong rows for some lanes of a SIMD group.
 double rowOf(double g, int seg) {
@@ -66,7 +66,7 @@ double rowOf(double g, int seg) {
   double last = gamma_half[2 * (h - 1)];
   if (g <= 0.0lf || h == 1) return g * row_dx_d[0] / d_ref;
   if (g >= last) return double(h - 1) + (g - last) * row_dx_d[h - 1] / d_ref;
-  if (seg < 0) {  // the last row j with Γ(j) <= g
+  if (seg < 0) {  // the last row j with Gamma(j) <= g
     int lo = 0, hi = h - 2;
     for (int k = 0; k < 31; ++k) {
       if (lo >= hi) break;
@@ -93,7 +93,7 @@ uint encodeFarSlope(float s) {
 
 vec2 gridPoint(float a, float b) { return x_dominant != 0 ? vec2(a, b) : vec2(b, a); }
 
-// SweepGeometry::owner: the row coordinate in Γ where curved.
+// SweepGeometry::owner: the row coordinate in Gamma where curved.
 int owner(float a, float b) {
   precise double bd = double(b), ad = double(a);
   if (curved != 0) {
@@ -118,10 +118,10 @@ void sampleAt(int m, float a, int front, out float b, out float p) {
   if (curved == 0) {
     b = c + r_f * a;
     p = float(m);
-  } else if (x_dominant == 0) {  // rows lead: a is a half row, Γ(a) from the table
+  } else if (x_dominant == 0) {  // rows lead: a is a half row, Gamma(a) from the table
     b = float(c_d + r_d * gamma_half[clamp(int(2.0 * a), 0, samples - 1)]);
     p = float(m);
-  } else {  // columns lead: b = Γ⁻¹(c + r*a), p = Δb/(r*delta_a)
+  } else {  // columns lead: b = Gamma^-1(c + r*a), p = db/(r*delta_a)
     double bd = rowOf(c_d + r_d * double(a), seg_hint[front]);
     seg_hint[front] = clamp(int(floor(bd)), 0, max(grid_height - 2, 0));
     b = float(bd);
@@ -180,9 +180,9 @@ void main() {
   // per-sample tests decide.
   int n_lo = 0;
   n_hi = samples - 1;
-  if (curved == 0 || x_dominant != 0) {  // b, or Γ(b), linear in n
+  if (curved == 0 || x_dominant != 0) {  // b, or Gamma(b), linear in n
     float beta = r_f * delta_a, b0 = c + r_f * a_start, lo = -1.0, hi = float(extent_b);
-    if (curved != 0) {  // Γ one row beyond each edge
+    if (curved != 0) {  // Gamma one row beyond each edge
       b0 = float(c_d + r_d * double(a_start));
       lo = float(-d_ref / row_dx_d[0]);
       hi = float(gamma_half[2 * (grid_height - 1)] + d_ref / row_dx_d[grid_height - 1]);
@@ -196,17 +196,17 @@ void main() {
     }
   } else if (r_d == 0.0lf) {  // rows lead, due north or south: b = c
     if (c < -1.0 || c > float(extent_b)) return;
-  } else {  // rows lead: Γ(a) within the columns' bounds, a by bisection of the half rows
+  } else {  // rows lead: Gamma(a) within the columns' bounds, a by bisection of the half rows
     double g1 = (-1.0lf - c_d) / r_d, g2 = (double(extent_b) - c_d) / r_d;
     double g_lo = min(g1, g2), g_hi = max(g1, g2);
-    int lo = 0, hi = samples - 1;  // first half row with Γ >= g_lo
+    int lo = 0, hi = samples - 1;  // first half row with Gamma >= g_lo
     for (int k = 0; k < 32; ++k) {  // a fixed count: see rowOf
       if (lo >= hi) break;
       int mid = (lo + hi) / 2;
       if (gamma_half[mid] >= g_lo) hi = mid; else lo = mid + 1;
     }
     int k_lo = lo;
-    lo = 0, hi = samples - 1;  // last half row with Γ <= g_hi
+    lo = 0, hi = samples - 1;  // last half row with Gamma <= g_hi
     for (int k = 0; k < 32; ++k) {
       if (lo >= hi) break;
       int mid = (lo + hi + 1) / 2;

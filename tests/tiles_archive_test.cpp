@@ -117,6 +117,8 @@ TEST(Folder, XyzAndTmsPaths) {
   EXPECT_EQ(file_bytes(dir.path() / "tms/2/1/3.png"), payload({2, 1, 0}));
   EXPECT_EQ(file_bytes(dir.path() / "tms/2/1/0.png"), payload({2, 1, 3}));
   EXPECT_EQ(read_content(dir.file("tms")), c);
+  EXPECT_NE(fs::status(dir.path() / "tms/2/1/3.png").permissions() & fs::perms::others_read,
+            fs::perms::none);  // servable, not mkstemp's 0600
   const std::string meta = file_bytes(dir.path() / "tms/metadata.json");
   EXPECT_NE(meta.find("\"scheme\":\"tms\""), std::string::npos) << meta;
   EXPECT_NE(meta.find("\"bounds\":[6.5,45.75,7.25,46.5]"), std::string::npos) << meta;

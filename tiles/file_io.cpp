@@ -1,6 +1,7 @@
 #include "tiles/file_io.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -23,7 +24,8 @@ void fail_errno(const fs::path& path, const std::string& what) {
   fail(path, what + ": " + std::strerror(errno));
 }
 
-File::File(const fs::path& path, int flags, int mode) : path_(path) {
+File::File(const fs::path& path, int flags, int mode, const fs::path& shown)
+    : path_(shown.empty() ? path : shown) {
   fd_ = ::open(path.c_str(), flags | O_CLOEXEC, mode);
   if (fd_ < 0) fail_errno(path, "cannot open");
 }
@@ -66,10 +68,11 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes, b
   name += "XXXXXX";
   const int fd = ::mkstemp(name.data());
   if (fd < 0) fail_errno(path, "cannot create a temporary file");
+  ::fchmod(fd, 0644);  // mkstemp's 0600 would hide tiles from a web server's user
   ::close(fd);
   const fs::path temp = name;
   try {
-    File f(temp, O_WRONLY | O_TRUNC);
+    File f(temp, O_WRONLY | O_TRUNC, 0644, path);
     f.write(bytes);
     if (sync) f.sync();
     f.close();

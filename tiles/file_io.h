@@ -24,7 +24,9 @@ inline constexpr const char* kTempTileMarker = ".tmp-";
 // An open file descriptor, closed on destruction.
 class File {
  public:
-  File(const std::filesystem::path& path, int flags, int mode = 0644);
+  // `shown`: the name errors give (a temporary's target), when not `path` itself.
+  File(const std::filesystem::path& path, int flags, int mode = 0644,
+       const std::filesystem::path& shown = {});
   ~File();
   File(const File&) = delete;
   File& operator=(const File&) = delete;

@@ -196,7 +196,7 @@ class PMTilesArchive final : public TileArchive {
 
     const fs::path temp = with_suffix(out_, kAssemblySuffix);
     try {
-      File f(temp, O_WRONLY | O_CREAT | O_TRUNC);
+      File f(temp, O_WRONLY | O_CREAT | O_TRUNC, 0644, out_);
       f.write(pmtiles::encode_header(h) + dirs.root + json + dirs.leaves);
       Statement all(db_, "SELECT tile_id, data FROM staged ORDER BY tile_id");
       std::size_t next = 0;  // index in first_ids: contents go out in tile-id order

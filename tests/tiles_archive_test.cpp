@@ -107,6 +107,22 @@ TEST(ArchiveKind, FromThePath) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+TEST(Reader, MissingOrUnfinishedArchivesFailInOneLine) {
+  ScratchDir dir;
+  for (const char* name : {"none", "none.mbtiles", "none.pmtiles"}) {
+    try {
+      open_reader(dir.file(name));
+      FAIL() << name;
+    } catch (const TileArchiveError& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+  }
+  { std::ofstream(dir.path() / "junk.pmtiles") << "not an archive"; }
+  EXPECT_THROW(open_reader(dir.file("junk.pmtiles")), TileArchiveError);
+  { std::ofstream(dir.path() / "junk.mbtiles") << "not a database"; }
+  EXPECT_THROW(open_archive(dir.file("junk.mbtiles"), {.mode = OpenMode::Resume}), TileArchiveError);
+}
+
 TEST(Folder, XyzAndTmsPaths) {
   ScratchDir dir;
   const Content c = pyramid(2, 2);

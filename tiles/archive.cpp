@@ -26,12 +26,16 @@ ArchiveKind archive_kind(const std::string& path) {
 }
 
 std::unique_ptr<TileArchive> open_archive(const std::string& path, const ArchiveOptions& options) {
-  switch (archive_kind(path)) {
-    case ArchiveKind::MBTiles: return detail::open_mbtiles_archive(path, options);
-    case ArchiveKind::PMTiles: return detail::open_pmtiles_archive(path, options);
-    case ArchiveKind::Folder: break;
+  try {
+    switch (archive_kind(path)) {
+      case ArchiveKind::MBTiles: return detail::open_mbtiles_archive(path, options);
+      case ArchiveKind::PMTiles: return detail::open_pmtiles_archive(path, options);
+      case ArchiveKind::Folder: break;
+    }
+    return detail::open_folder_archive(path, options);
+  } catch (const fs::filesystem_error& e) {  // permissions and the like: still one line
+    detail::fail(path, e.code().message());
   }
-  return detail::open_folder_archive(path, options);
 }
 
 namespace detail {

@@ -52,6 +52,8 @@ struct ArchiveOptions {
   std::size_t pmtiles_max_root_bytes = 16384 - 127;
 };
 
+// Not thread-safe: one thread puts at a time (rendering may be parallel, storing is not).
+// After an exception, destroy the archive and open it again with OpenMode::Resume.
 class TileArchive {
  public:
   virtual ~TileArchive() = default;  // without finish(): what was put stays resumable
@@ -60,6 +62,7 @@ class TileArchive {
   // Stores `bytes` (non-empty) as tile `t`, replacing an earlier version.
   virtual void put(const TileId& t, std::span<const std::byte> bytes) = 0;
   // Writes the metadata and makes the archive complete at its path; nothing may follow.
+  // PMTiles needs at least one tile.
   virtual void finish(const TileMetadata& metadata) = 0;
 };
 

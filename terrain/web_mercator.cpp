@@ -36,6 +36,15 @@ double tile_span(int z) { return 2.0 * kWebMercatorOriginShift / tiles_per_side(
 
 int clamp_index(double v, int n) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(n - 1))); }
 
+// Position in tiles of a distance from the world's west (or north) edge; within
+// kEdgeSnapMetres of a tile edge it is that edge exactly, so boxes built from
+// tile_bounds() (a few ulps off) select their own tiles and no neighbour.
+constexpr double kEdgeSnapMetres = 1e-6;
+double in_tiles(double metres, double span) {
+  const double f = metres / span, r = std::round(f);
+  return std::abs(f - r) * span < kEdgeSnapMetres ? r : f;
+}
+
 }  // namespace
 
 int tiles_per_side(int z) {
@@ -83,7 +92,7 @@ TileId tile_at(double lon_deg, double lat_deg, int z) {
   const int n = tiles_per_side(z);
   const MercatorPoint p = lon_lat_to_mercator(lon_deg, lat_deg);
   const double span = tile_span(z), s = kWebMercatorOriginShift;
-  return {z, clamp_index(std::floor((p.x + s) / span), n), clamp_index(std::floor((s - p.y) / span), n)};
+  return {z, clamp_index(std::floor(in_tiles(p.x + s, span)), n), clamp_index(std::floor(in_tiles(s - p.y, span)), n)};
 }
 
 TileRange tiles_covering(const MercatorBox& box, int z) {
@@ -95,8 +104,8 @@ TileRange tiles_covering(const MercatorBox& box, int z) {
   const double ymin = std::max(box.ymin, -s), ymax = std::min(box.ymax, s);
   if (!(xmin <= xmax && ymin <= ymax)) return r;  // outside the world (or NaN): empty
   // Tile columns: first holding xmin, last whose west edge is below xmax (half-open).
-  const double fx0 = (xmin + s) / span, fx1 = (xmax + s) / span;
-  const double fy0 = (s - ymax) / span, fy1 = (s - ymin) / span;
+  const double fx0 = in_tiles(xmin + s, span), fx1 = in_tiles(xmax + s, span);
+  const double fy0 = in_tiles(s - ymax, span), fy1 = in_tiles(s - ymin, span);
   r.x0 = clamp_index(std::floor(fx0), n);
   r.x1 = std::max(r.x0, clamp_index(std::ceil(fx1) - 1.0, n));
   r.y0 = clamp_index(std::floor(fy0), n);

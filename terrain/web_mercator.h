@@ -5,7 +5,8 @@
 // Conventions (tests rely on them):
 //  * Tile (z, x, y) covers the half-open 3857 box [xmin, xmax) × (ymin, ymax]: a point
 //    exactly on a tile edge belongs to the tile east of it / south of it, as in
-//    `tile_at`. Pixel rows of a tile run north to south, as in GDAL rasters.
+//    `tile_at`; "exactly" means within 1 µm, so boxes made from tile_bounds() select
+//    their own tiles despite rounding. Pixel rows of a tile run north to south, as in GDAL rasters.
 //  * Latitudes are clamped to ±kMaxLatitudeDeg (the square world's edge) before they
 //    are projected; longitudes outside [−180°, 180°] are not wrapped.
 //  * TMS (MBTiles rows) is the same grid with y counted from the south: tms_y().

@@ -273,6 +273,10 @@ TEST(TileWindow, OutsideTheDemIsMarkedNotAnError) {
     ASSERT_EQ(far.field.valid[k], 0);
     ASSERT_EQ(far.field.heights[k], 0.0f);
   }
+  // A halo past the world's corner (west of −180°, north of 85.05°) is just more outside.
+  const TileWindow corner = source.window({3, 0, 0, 0, 0}, {.halo = 8});
+  EXPECT_TRUE(corner.empty());
+  EXPECT_EQ(corner.field.height, 272);
   // The DEM's west edge (118.3457°W at the top, 118.3430°W at the bottom) crosses global
   // pixel column (180 − 118.345)/360 · 8192 · 256 ≈ 1403 · 256 ± 12 at z 13: with a 64-px
   // halo the window over tile 1403 is invalid on the west, valid on the east, every

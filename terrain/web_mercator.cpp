@@ -25,10 +25,9 @@ void check_tile_size(int tile_size) {
 }
 
 void check_tile(const TileId& t) {
-  const int n = tiles_per_side(t.z);
-  if (t.x < 0 || t.x >= n || t.y < 0 || t.y >= n)
-    throw std::invalid_argument("tile " + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" +
-                                std::to_string(t.y) + " does not exist (x and y run 0…" + std::to_string(n - 1) + ")");
+  if (!is_valid(t))
+    throw std::invalid_argument("tile " + to_string(t) + " does not exist (x and y run 0…" +
+                                std::to_string(tiles_per_side(t.z) - 1) + ")");
 }
 
 // Width of one tile in 3857 metres.
@@ -53,6 +52,16 @@ int tiles_per_side(int z) {
 }
 
 int tms_y(int z, int y) { return tiles_per_side(z) - 1 - y; }
+
+bool is_valid(const TileId& t) {
+  if (t.z < 0 || t.z > kMaxTileZoom) return false;
+  const int n = 1 << t.z;
+  return t.x >= 0 && t.x < n && t.y >= 0 && t.y < n;
+}
+
+std::string to_string(const TileId& t) {
+  return std::to_string(t.z) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y);
+}
 
 double pixel_size(int z, int tile_size) {
   check_tile_size(tile_size);

@@ -12,7 +12,9 @@
 //  * TMS (MBTiles rows) is the same grid with y counted from the south: tms_y().
 #pragma once
 
+#include <compare>
 #include <numbers>
+#include <string>
 
 #include "terrain/geolocation.h"
 #include "terrain/height_field.h"
@@ -26,9 +28,12 @@ inline constexpr double kWebMercatorOriginShift = std::numbers::pi * kWebMercato
 inline constexpr double kWebMercatorMaxLatitudeDeg = 85.0511287798066;
 inline constexpr int kMaxTileZoom = 30;  // 2^30 tiles per side still fits an int
 
+// The one tile address of the project (tiles/ archives take it too). Ordered by z, then
+// x, then y: archives list and merge tiles in that order.
 struct TileId {
   int z = 0, x = 0, y = 0;  // XYZ
   bool operator==(const TileId&) const = default;
+  auto operator<=>(const TileId&) const = default;
 };
 
 // Boxes: west ≤ east, south ≤ north.
@@ -64,6 +69,9 @@ struct ZoomRange {
 // 256 or 512.
 int tiles_per_side(int z);
 int tms_y(int z, int y);  // 2^z − 1 − y (its own inverse)
+// 0 ≤ z ≤ kMaxTileZoom and 0 ≤ x, y < 2^z; never throws (for input from files).
+bool is_valid(const TileId& t);
+std::string to_string(const TileId& t);  // "z/x/y", for messages
 
 // 3857 metres per pixel at zoom z: 2πR / (tile_size · 2^z); 156543.03392804097 at z 0, 256 px.
 double pixel_size(int z, int tile_size = 256);

@@ -256,7 +256,7 @@ TEST(PMTiles, LeafDirectoriesAtRealSize) {
   ScratchDir dir;
   const std::string out = dir.file("t.pmtiles");
   Content c;
-  for (std::uint32_t i = 0; i < 40000; ++i) {  // z8 has 65536 tiles; every 1.6th is put
+  for (int i = 0; i < 40000; ++i) {  // z8 has 65536 tiles; every 1.6th is put
     const TileId t{8, (i * 37) % 256, (i * 37) / 256 % 256};
     c[t] = payload(t, 1 + i % 97);
   }

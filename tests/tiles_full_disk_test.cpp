@@ -37,10 +37,10 @@ class Tmpfs {
 Content noise_tiles(int z, std::size_t count) {
   Content c;
   std::mt19937 rng(5);
-  for (std::uint32_t i = 0; i < count; ++i) {
+  for (int i = 0; i < static_cast<int>(count); ++i) {
     std::string s(4096, '\0');
     for (auto& ch : s) ch = static_cast<char>(rng());
-    c[{z, i % (1u << z), i / (1u << z)}] = s;
+    c[{z, i % (1 << z), i / (1 << z)}] = s;
   }
   return c;
 }

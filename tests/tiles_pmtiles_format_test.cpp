@@ -33,7 +33,7 @@ TEST(Hilbert, MatchesTheSpecTable) {
 
 TEST(Hilbert, FirstIdOfEachZoomIsTheCountOfShallowerTiles) {
   std::uint64_t before = 0;  // 1 + 4 + … + 4^(n−1) = (4^n − 1)/3, summed by hand here
-  for (int z = 0; z <= kMaxZoom; ++z) {
+  for (int z = 0; z <= terrain::kMaxTileZoom; ++z) {
     EXPECT_EQ(tile_id({z, 0, 0}), before) << "z=" << z;
     before += std::uint64_t{1} << (2 * z);
   }
@@ -48,7 +48,7 @@ TEST(Hilbert, ZoomTwoInCurveOrder) {
                                                {1, 3}, {1, 2}, {2, 2}, {2, 3}, {3, 3}, {3, 2},
                                                {3, 1}, {2, 1}, {2, 0}, {3, 0}};
   for (std::size_t d = 0; d < order.size(); ++d) {
-    const TileId t{2, static_cast<std::uint32_t>(order[d].first), static_cast<std::uint32_t>(order[d].second)};
+    const TileId t{2, order[d].first, order[d].second};
     EXPECT_EQ(tile_id(t), 5 + d) << to_string(t);
     EXPECT_EQ(tile_of(5 + d), t);
   }
@@ -75,8 +75,8 @@ TEST(Hilbert, ConsecutiveIdsAreNeighboursAndTheInverseHolds) {
   }
   std::mt19937_64 rng(7);
   for (int i = 0; i < 1000; ++i) {
-    const int z = static_cast<int>(rng() % (kMaxZoom + 1));
-    const TileId t{z, static_cast<std::uint32_t>(rng() % (1ull << z)), static_cast<std::uint32_t>(rng() % (1ull << z))};
+    const int z = static_cast<int>(rng() % (terrain::kMaxTileZoom + 1));
+    const TileId t{z, static_cast<int>(rng() % (1ull << z)), static_cast<int>(rng() % (1ull << z))};
     ASSERT_EQ(tile_of(tile_id(t)), t) << to_string(t);
   }
 }

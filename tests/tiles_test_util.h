@@ -61,8 +61,8 @@ inline std::string payload(const TileId& t, std::size_t filler = 0) {
 inline Content pyramid(int z0, int z1) {
   Content c;
   for (int z = z0; z <= z1; ++z)
-    for (std::uint32_t x = 0; x < (1u << z); ++x)
-      for (std::uint32_t y = 0; y < (1u << z); ++y) c[{z, x, y}] = payload({z, x, y});
+    for (int x = 0; x < (1 << z); ++x)
+      for (int y = 0; y < (1 << z); ++y) c[{z, x, y}] = payload({z, x, y});
   return c;
 }
 

@@ -13,10 +13,14 @@
 #include <string>
 #include <utility>
 
+#include "terrain/web_mercator.h"
 #include "tiles/metadata.h"
-#include "tiles/tile_id.h"
 
 namespace skylit::tiles {
+
+// Tiles are addressed by the terrain grid's XYZ TileId (terrain/web_mercator.h, the one
+// definition of the tile grid); TMS rows and PMTiles ids are derived where a format needs them.
+using terrain::TileId;
 
 // Every failure of this library; what() is one line naming the file and the problem.
 // option(): the ArchiveOptions mode that would fix it ("overwrite", "resume"), or empty.

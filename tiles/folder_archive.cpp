@@ -24,15 +24,15 @@ bool is_temp(const fs::path& p) {
   return name.starts_with('.') && name.find(kTempTileMarker) != std::string::npos;
 }
 
-std::optional<std::uint32_t> parse_number(std::string_view s) {
-  std::uint32_t v = 0;
+std::optional<int> parse_number(std::string_view s) {
+  int v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size() || s.empty()) return std::nullopt;
   return v;
 }
 
 fs::path tile_path(const fs::path& root, const TileId& t, Scheme scheme, TileFormat format) {
-  const std::uint32_t row = scheme == Scheme::Tms ? flip_row(t.z, t.y) : t.y;
+  const int row = scheme == Scheme::Tms ? terrain::tms_y(t.z, t.y) : t.y;
   return root / std::to_string(t.z) / std::to_string(t.x) /
          (std::to_string(row) + "." + std::string(format_name(format)));
 }
@@ -131,7 +131,7 @@ class FolderReader final : public TileReader {
     std::vector<TileId> out;
     for (const auto& ze : fs::directory_iterator(root_)) {
       const auto z = parse_number(ze.path().filename().string());
-      if (!ze.is_directory() || !z || *z > static_cast<std::uint32_t>(kMaxZoom)) continue;
+      if (!ze.is_directory() || !z) continue;
       for (const auto& xe : fs::directory_iterator(ze.path())) {
         const auto x = parse_number(xe.path().filename().string());
         if (!xe.is_directory() || !x) continue;
@@ -140,9 +140,9 @@ class FolderReader final : public TileReader {
           if (!ye.is_regular_file() || !name.ends_with(ext)) continue;
           const auto row = parse_number(std::string_view(name).substr(0, name.size() - ext.size()));
           if (!row) continue;
-          TileId t{static_cast<int>(*z), *x, *row};
+          TileId t{*z, *x, *row};
           if (!is_valid(t)) continue;
-          if (scheme_ == Scheme::Tms) t.y = flip_row(t.z, t.y);
+          if (scheme_ == Scheme::Tms) t.y = terrain::tms_y(t.z, t.y);
           out.push_back(t);
         }
       }

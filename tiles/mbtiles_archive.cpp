@@ -153,7 +153,7 @@ class MBTilesArchive final : public TileArchive {
   }
 
   static Statement& bind(Statement& s, const TileId& t) {
-    return s.bind(1, t.z).bind(2, t.x).bind(3, flip_row(t.z, t.y));
+    return s.bind(1, t.z).bind(2, t.x).bind(3, terrain::tms_y(t.z, t.y));
   }
 
   fs::path out_;
@@ -196,10 +196,14 @@ class MBTilesReader final : public TileReader {
     std::vector<TileId> out;
     while (rows.step()) {
       const auto z = rows.column_int(0), x = rows.column_int(1), row = rows.column_int(2);
-      if (z < 0 || z > kMaxZoom || x < 0 || row < 0 || row >= static_cast<std::int64_t>(tiles_per_axis(z)))
-        fail(db_.path(), "holds a tile outside its zoom's grid");
-      const int zi = static_cast<int>(z);
-      out.push_back({zi, static_cast<std::uint32_t>(x), flip_row(zi, static_cast<std::uint32_t>(row))});
+      // Out-of-int values become −1 so that is_valid() refuses them rather than wrapping.
+      const auto narrow = [](std::int64_t v) {
+        return v >= 0 && v < (std::int64_t{1} << terrain::kMaxTileZoom) ? static_cast<int>(v) : -1;
+      };
+      TileId t{narrow(z), narrow(x), narrow(row)};
+      if (!is_valid(t)) fail(db_.path(), "holds a tile outside its zoom's grid");
+      t.y = terrain::tms_y(t.z, t.y);
+      out.push_back(t);
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -208,7 +212,7 @@ class MBTilesReader final : public TileReader {
   std::optional<std::string> get(const TileId& t) const override {
     if (!is_valid(t)) return std::nullopt;
     Statement s(db_, "SELECT tile_data FROM tiles WHERE zoom_level = ? AND tile_column = ? AND tile_row = ?");
-    s.bind(1, t.z).bind(2, t.x).bind(3, flip_row(t.z, t.y));
+    s.bind(1, t.z).bind(2, t.x).bind(3, terrain::tms_y(t.z, t.y));
     if (!s.step()) return std::nullopt;
     return s.column_text(0);
   }

@@ -38,16 +38,16 @@ TileFormat parse_format(std::string_view name) {
 
 void validate(const TileMetadata& m) {
   if (m.name.empty()) bad("empty name");
-  if (m.minzoom < 0 || m.maxzoom > kMaxZoom || m.minzoom > m.maxzoom)
+  if (m.minzoom < 0 || m.maxzoom > terrain::kMaxTileZoom || m.minzoom > m.maxzoom)
     bad("zooms " + std::to_string(m.minzoom) + ".." + std::to_string(m.maxzoom) +
-        " are not within 0.." + std::to_string(kMaxZoom));
+        " are not within 0.." + std::to_string(terrain::kMaxTileZoom));
   const Bounds& b = m.bounds;
   if (!(b.west >= -180 && b.east <= 180 && b.west <= b.east && b.south >= -90 && b.north <= 90 &&
         b.south <= b.north))
     bad("bounds are not W,S,E,N within the globe");
   if (!(std::abs(m.center.lon) <= 180 && std::abs(m.center.lat) <= 90) || m.center.zoom < 0 ||
-      m.center.zoom > kMaxZoom)
-    bad("center is not lon,lat,zoom within the globe and 0.." + std::to_string(kMaxZoom));
+      m.center.zoom > terrain::kMaxTileZoom)
+    bad("center is not lon,lat,zoom within the globe and 0.." + std::to_string(terrain::kMaxTileZoom));
   if (m.type && *m.type != "overlay" && *m.type != "baselayer")
     bad("type '" + *m.type + "' is neither overlay nor baselayer");
 }

@@ -38,7 +38,7 @@ struct TileMetadata {
 };
 
 // Throws TileArchiveError naming the first field that no archive kind could store
-// (empty name, zooms outside [0, kMaxZoom] or min > max, bounds off the globe, a type
+// (empty name, zooms outside [0, terrain::kMaxTileZoom] or min > max, bounds off the globe, a type
 // other than overlay/baselayer).
 void validate(const TileMetadata& m);
 

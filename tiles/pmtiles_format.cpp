@@ -17,6 +17,9 @@ namespace {
 constexpr std::string_view kMagic = "PMTiles";
 constexpr std::uint8_t kVersion = 3;
 
+// Tiles per axis at zoom z, in the 64 bits Hilbert arithmetic needs.
+std::uint64_t side(int z) { return std::uint64_t{1} << z; }
+
 std::uint64_t tiles_before(int z) { return ((std::uint64_t{1} << (2 * z)) - 1) / 3; }
 
 // Hilbert-curve rotation of the quadrant (Wikipedia "Hilbert curve", xy2d / d2xy).
@@ -54,7 +57,7 @@ TileType tile_type(TileFormat f) {
 
 std::uint64_t tile_id(const TileId& t) {
   if (!is_valid(t)) bad("tile " + to_string(t) + " is outside its zoom's grid");
-  const std::uint64_t n = tiles_per_axis(t.z);
+  const std::uint64_t n = side(t.z);
   std::uint64_t x = t.x, y = t.y, d = 0;
   for (std::uint64_t s = n / 2; s > 0; s /= 2) {
     const std::uint64_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
@@ -66,18 +69,18 @@ std::uint64_t tile_id(const TileId& t) {
 
 TileId tile_of(std::uint64_t id) {
   int z = 0;
-  while (z < kMaxZoom && id >= tiles_before(z + 1)) ++z;
+  while (z < terrain::kMaxTileZoom && id >= tiles_before(z + 1)) ++z;
   std::uint64_t t = id - tiles_before(z);
-  if (t >= tiles_per_axis(z) * tiles_per_axis(z)) bad("tile id " + std::to_string(id) + " is too deep");
+  if (t >= side(z) * side(z)) bad("tile id " + std::to_string(id) + " is too deep");
   std::uint64_t x = 0, y = 0;
-  for (std::uint64_t s = 1; s < tiles_per_axis(z); s *= 2) {
+  for (std::uint64_t s = 1; s < side(z); s *= 2) {
     const std::uint64_t rx = 1 & (t / 2), ry = 1 & (t ^ rx);
     rotate(s, x, y, rx, ry);
     x += s * rx;
     y += s * ry;
     t /= 4;
   }
-  return {z, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)};
+  return {z, static_cast<int>(x), static_cast<int>(y)};
 }
 
 void write_varint(std::string& out, std::uint64_t v) {

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tiles/archive.h"
 #include "tiles/metadata.h"
-#include "tiles/tile_id.h"
 
 namespace skylit::tiles::pmtiles {
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "terrain/dem_reader.h"
 
@@ -125,6 +126,33 @@ TileRange tiles_covering(const MercatorBox& box, int z) {
 TileRange tiles_covering(const LonLatBox& box, int z) {
   const MercatorPoint sw = lon_lat_to_mercator(box.west, box.south), ne = lon_lat_to_mercator(box.east, box.north);
   return tiles_covering(MercatorBox{sw.x, sw.y, ne.x, ne.y}, z);
+}
+
+LonLatBox dem_lon_lat_bounds(const HeightField& dem) {
+  std::vector<PixelPoint> edge;
+  for (int k = 0; k <= kGridEdgeSamples; ++k) {
+    const double f = static_cast<double>(k) / kGridEdgeSamples;
+    const double c = f * dem.width, r = f * dem.height;
+    edge.insert(edge.end(), {{c, 0.0}, {c, double(dem.height)}, {0.0, r}, {double(dem.width), r}});
+  }
+  const auto points = grid_points_lat_lon(dem.georef, edge);
+  if (!points)
+    throw DemError("the DEM has no " + std::string(dem.georef.crs_wkt.empty() ? "CRS" : "geotransform") +
+                   ", so it cannot be placed on the web-map tile grid");
+  LonLatBox box{180.0, 90.0, -180.0, -90.0};
+  for (const LatLon& p : *points) {
+    box.west = std::min(box.west, p.longitude_deg);
+    box.east = std::max(box.east, p.longitude_deg);
+    box.south = std::min(box.south, p.latitude_deg);
+    box.north = std::max(box.north, p.latitude_deg);
+  }
+  return box;
+}
+
+MercatorBox dem_mercator_bounds(const HeightField& dem) {
+  const LonLatBox b = dem_lon_lat_bounds(dem);
+  const MercatorPoint sw = lon_lat_to_mercator(b.west, b.south), ne = lon_lat_to_mercator(b.east, b.north);
+  return {sw.x, sw.y, ne.x, ne.y};
 }
 
 int native_zoom(const HeightField& dem, int tile_size) {

@@ -95,6 +95,15 @@ TileId tile_at(double lon_deg, double lat_deg, int z);
 TileRange tiles_covering(const MercatorBox& box, int z);
 TileRange tiles_covering(const LonLatBox& box, int z);  // latitudes clamped
 
+// The DEM's extent on the tile grid: its pixel edges (kGridEdgeSamples points per
+// edge, so a projected DEM's curved 3857 outline is bounded within metres) through its
+// CRS to WGS 84, as a WGS 84 and a 3857 box. A DEM across the antimeridian is not
+// handled (its box would span the world). Throws DemError when the DEM has no CRS or
+// geotransform.
+inline constexpr int kGridEdgeSamples = 64;
+LonLatBox dem_lon_lat_bounds(const HeightField& dem);
+MercatorBox dem_mercator_bounds(const HeightField& dem);
+
 // Native zoom of a DEM: the smallest zoom whose ground pixel size at the DEM's centre
 // latitude is at or finer than the DEM's ground resolution,
 //   min { z : pixel_size(z) · cos φ_centre ≤ min(dem.dy, dem.dx(centre row)) }.

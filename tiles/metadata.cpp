@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "tiles/archive.h"
+#include "tiles/pmtiles_format.h"
 
 namespace skylit::tiles {
 namespace {
@@ -66,6 +67,8 @@ std::string metadata_to_json(const TileMetadata& m, std::string_view extra_key,
   if (!extra_key.empty()) j[std::string(extra_key)] = extra_value;
   return j.dump();  // keys sorted: the same metadata gives the same bytes
 }
+
+double at_e7_precision(double degrees) { return pmtiles::to_e7(degrees) / 1e7; }
 
 TileMetadata metadata_from_json(std::string_view text, const std::string& source) {
   const json j = json::parse(text, nullptr, false);

@@ -37,6 +37,11 @@ struct TileMetadata {
   friend bool operator==(const TileMetadata&, const TileMetadata&) = default;
 };
 
+// Degrees at the precision PMTiles' header keeps them (1e-7°, about a centimetre), which
+// its reader reports: bounds and centres built with it read back the same from every
+// kind, so a merge of shards writes the single run's metadata byte for byte.
+double at_e7_precision(double degrees);
+
 // Throws TileArchiveError naming the first field that no archive kind could store
 // (empty name, zooms outside [0, terrain::kMaxTileZoom] or min > max, bounds off the globe, a type
 // other than overlay/baselayer).

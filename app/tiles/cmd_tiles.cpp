@@ -164,8 +164,9 @@ int run_tiles(const TilesArgs& a) {
   st::TileMetadata meta;
   meta.name = a.name.empty() ? std::filesystem::path(a.inputs.front()).stem().string() + " " + a.product : a.name;
   meta.format = st::TileFormat::Png;
-  meta.bounds = {ll.west, ll.south, ll.east, ll.north};
-  meta.center = {0.5 * (ll.west + ll.east), 0.5 * (ll.south + ll.north), zooms.min};
+  const auto e7 = st::at_e7_precision;
+  meta.bounds = {e7(ll.west), e7(ll.south), e7(ll.east), e7(ll.north)};
+  meta.center = {e7(0.5 * (ll.west + ll.east)), e7(0.5 * (ll.south + ll.north)), zooms.min};
   meta.minzoom = zooms.min;
   meta.maxzoom = zooms.max;
   meta.description = "skylit tiles -p " + a.product;

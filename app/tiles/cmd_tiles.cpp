@@ -2,6 +2,7 @@
 // shading product or a DEM encoding, per zoom from windows with a halo (docs/tiles.md).
 // Every check that can fail is made before the archive is opened, so a bad run leaves
 // no output behind.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -156,10 +157,14 @@ int run_tiles(const TilesArgs& a) {
     });
     if (const auto why = renderer->lacks(*job.product, job.options)) throw std::invalid_argument(*why);
   }
-  if (!a.quiet)
+  if (!a.quiet) {
     std::cerr << "skylit: zooms " << zooms.min << "-" << zooms.max << " (native " << source.native_zoom(a.tile_size)
               << "), " << mine.size() << " of " << all.size() << " window blocks (shard " << shard.index << "/"
-              << shard.count << "), halo " << plans.front().halo << "-" << plans.back().halo << " px\n";
+              << shard.count << ")" << (job.product ? "; halo and horizon distance:" : "");
+    for (const ZoomPlan& p : plans)
+      if (job.product) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
+    std::cerr << "\n";
+  }
 
   st::TileMetadata meta;
   meta.name = a.name.empty() ? std::filesystem::path(a.inputs.front()).stem().string() + " " + a.product : a.name;

@@ -45,7 +45,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     const ZoomPlan& plan = plan_of(plans, b.z);
     terrain::TileWindowOptions wo;
     wo.tile_size = job.tile_size;
-    wo.halo = plan.halo;
+    wo.halo = job.product ? plan.halo : 0;  // DEM encodings read no neighbours
     wo.resampling = job.resampling;
     const terrain::TileWindow window = source.window(b.tiles, wo);
     if (window.empty()) {

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -27,6 +28,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/tiles/tile_plan.h"
 #include "terrain/dem_reader.h"
 #include "terrain/dem_tile_encoding.h"
 #include "terrain/tile_window.h"
@@ -322,6 +324,51 @@ TEST_F(Tiles, KilledRunResumedEqualsAnUninterruptedOne) {
   EXPECT_LT(before, folder_tiles(out.file("whole")).size());
   tiles("-o " + part + " --resume " + args);
   EXPECT_TRUE(folder(part) == folder(out.file("whole")));
+}
+
+// The plan alone (no binary): a block grid aligned to its block size, and shards that
+// partition the blocks with costs within one block of each other.
+TEST(TilePlan, BlocksAlignAndShardsPartitionByCost) {
+  namespace at = skylit::app::tiles;
+  const terrain::MercatorBox box{-13160000, 4070000, -13130000, 4085000};  // ~30 × 15 km at 34°N
+  std::vector<at::Block> all;
+  for (int z = 10; z <= 14; ++z) {
+    const at::ZoomPlan plan = at::plan_zoom(box, 34.4, z, 256, {});
+    EXPECT_GE(plan.halo, at::kMinHalo);
+    EXPECT_LE(plan.halo, at::kMaxHalo);
+    EXPECT_LE(plan.max_distance_m, at::kDefaultMaxDistanceM);
+    for (const at::Block& b : at::blocks(plan, 256)) {
+      EXPECT_EQ(b.tiles.x0 / plan.block_columns, b.column);  // inside its grid cell
+      EXPECT_EQ(b.tiles.x1 / plan.block_columns, b.column);
+      EXPECT_EQ(b.tiles.y0 / plan.block_rows, b.row);
+      EXPECT_EQ(b.tiles.y1 / plan.block_rows, b.row);
+      all.push_back(b);
+    }
+  }
+  ASSERT_GT(all.size(), 8u);
+  for (int n : {1, 2, 3, 7}) {
+    std::vector<double> cost;
+    std::size_t blocks = 0;
+    double largest = 0;
+    for (const auto& b : all) largest = std::max(largest, b.cost);
+    for (int i = 1; i <= n; ++i) {
+      const auto mine = at::shard_blocks(all, {i, n});
+      EXPECT_EQ(at::shard_blocks(all, {i, n}), mine);  // deterministic
+      blocks += mine.size();
+      double c = 0;
+      for (const auto& b : mine) c += b.cost;
+      cost.push_back(c);
+    }
+    EXPECT_EQ(blocks, all.size()) << n << " shards";  // with the next line: a partition
+    EXPECT_LE(*std::max_element(cost.begin(), cost.end()) - *std::min_element(cost.begin(), cost.end()), largest);
+  }
+  std::set<std::pair<int, int>> seen;
+  for (int i = 1; i <= 3; ++i)
+    for (const auto& b : at::shard_blocks(all, {i, 3})) EXPECT_TRUE(seen.insert({b.z * 100000 + b.row, b.column}).second);
+  EXPECT_THROW(at::parse_shard("3/2"), std::invalid_argument);
+  EXPECT_THROW(at::parse_shard("0/1"), std::invalid_argument);
+  EXPECT_THROW(at::parse_shard("1/"), std::invalid_argument);
+  EXPECT_EQ(at::parse_shard("2/5").index, 2);
 }
 
 // DEM without a CRS: the crop's heights and geotransform, no spatial reference.

@@ -14,6 +14,7 @@ PACKAGES=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   libpugixml-dev libproj-dev proj-data
+  libsqlite3-dev zlib1g-dev sqlite3   # tiles/: MBTiles, PMTiles staging, gzip; sqlite3 CLI for tests
   clang-16 libclang-rt-16-dev   # libFuzzer for scripts/fuzz.sh (the build itself uses g++)
   chromium                      # headless browser for the tile viewer's test (tests/web)
 )

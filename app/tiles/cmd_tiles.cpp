@@ -16,6 +16,7 @@
 #include "app/tiles/merge_cmd.h"
 #include "app/tiles/tile_plan.h"
 #include "app/tiles/tile_run.h"
+#include "app/tiles/web_viewer.h"
 #include "gpu/renderer_factory.h"
 #include "shading/quality.h"
 #include "terrain/dem_reader.h"
@@ -45,8 +46,28 @@ struct TilesArgs {
   std::optional<double> max_distance;
   std::string quality = "default";
   std::string name;
+  std::string webviewer = "none";
   LightingArgs light;
 };
+
+// -w leaflet: the page beside a .pmtiles file, or inside a tile folder (as gdal2tiles).
+ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileMetadata& meta, std::string& folder) {
+  namespace fs = std::filesystem;
+  const fs::path out(a.output);
+  ViewerSpec v;
+  v.title = meta.name;
+  v.kind = kind == st::ArchiveKind::PMTiles ? ViewerSpec::Kind::Pmtiles : ViewerSpec::Kind::Folder;
+  v.url = kind == st::ArchiveKind::PMTiles ? out.filename().string() : ".";
+  folder = kind == st::ArchiveKind::PMTiles ? (out.has_parent_path() ? out.parent_path().string() : ".") : a.output;
+  v.tms = a.tms;
+  v.format = "png";
+  v.tile_size = a.tile_size;
+  v.minzoom = meta.minzoom;
+  v.maxzoom = meta.maxzoom;
+  v.bounds = {meta.bounds.west, meta.bounds.south, meta.bounds.east, meta.bounds.north};
+  v.attribution = "skylit";
+  return v;
+}
 
 terrain::ZoomRange parse_zoom(const std::string& text, int native) {
   if (text.empty()) return terrain::default_zoom_range(native);
@@ -98,6 +119,8 @@ int run_tiles(const TilesArgs& a) {
   const st::ArchiveKind kind = st::archive_kind(a.output);  // "out.zip" fails here
   if (a.tms && kind != st::ArchiveKind::Folder)
     throw std::invalid_argument("--tms orders a folder's rows; MBTiles rows are TMS and PMTiles XYZ by their specs");
+  if (a.webviewer == "leaflet" && kind == st::ArchiveKind::MBTiles)
+    throw std::invalid_argument("-w leaflet: a web page cannot read MBTiles; write a .pmtiles file or a folder");
   if (a.format != "png")
     throw std::invalid_argument("--format " + a.format + ": this build writes png tiles only");
   st::ArchiveOptions archive_options;
@@ -180,6 +203,12 @@ int run_tiles(const TilesArgs& a) {
   const auto archive = st::open_archive(a.output, archive_options);
   const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), *archive);
   archive->finish(meta);
+  if (a.webviewer == "leaflet") {
+    std::string folder;
+    const ViewerSpec spec = viewer_spec(a, kind, meta, folder);
+    write_leaflet_viewer(folder, spec);
+    if (!a.quiet) std::cerr << "skylit: wrote " << (std::filesystem::path(folder) / "index.html").string() << "\n";
+  }
   if (!a.quiet)
     std::cerr << "skylit: wrote " << a.output << ": " << n.written << " tiles (" << n.skipped
               << " already complete, " << n.empty << " outside the DEM)"
@@ -219,6 +248,10 @@ void add_tiles_command(CLI::App& root, Action& run) {
                        "DEM's centre, or --lat/--lon); one time, not a series");
   cmd->add_option("--name", a->name, "Archive name in its metadata (default: the DEM's file name and the product)");
   cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer (0: all cores)")->capture_default_str();
+  cmd->add_option("-w,--webviewer", a->webviewer,
+                  "leaflet: an index.html showing the tiles on a Leaflet map (beside a .pmtiles file, inside a "
+                  "folder; Leaflet and pmtiles.js inlined) | none")
+      ->check(CLI::IsMember({"none", "leaflet"}))->capture_default_str();
   cmd->add_flag("-e,--resume", a->resume, "Complete an interrupted run: keep its finished tiles");
   cmd->add_flag("--overwrite", a->overwrite, "Replace OUT if it exists");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or notes");

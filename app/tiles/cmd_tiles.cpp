@@ -177,9 +177,12 @@ int run_tiles(const TilesArgs& a) {
   meta.description = "skylit tiles -p " + a.product;
   st::validate(meta);
 
-  const auto archive = st::open_archive(a.output, archive_options);
-  const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), *archive);
-  archive->finish(meta);
+  LazyArchive archive(a.output, archive_options);
+  const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), archive);
+  if (!archive.opened())
+    throw std::invalid_argument("nothing to render: the " + std::to_string(n.empty) + " tiles of shard " + a.shard +
+                                " lie outside the DEM's valid pixels");
+  archive.finish(meta);
   if (!a.quiet)
     std::cerr << "skylit: wrote " << a.output << ": " << n.written << " tiles (" << n.skipped
               << " already complete, " << n.empty << " outside the DEM)"

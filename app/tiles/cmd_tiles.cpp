@@ -38,6 +38,7 @@ struct TilesArgs {
   std::string resampling;
   std::string format = "png";
   bool tms = false;
+  bool xyz = false;  // the default; accepted in gdal2tiles' spelling
   unsigned threads = 0;
   bool quiet = false, resume = false, overwrite = false;
   std::string shard = "1/1";
@@ -208,7 +209,8 @@ void add_tiles_command(CLI::App& root, Action& run) {
                   "DEM resampling onto each zoom: near | bilinear | cubic | cubicspline | lanczos | average "
                   "(default: cubic at and above the native zoom, average below)");
   cmd->add_option("--format", a->format, "Tile image format (png)")->capture_default_str();
-  cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
+  auto* tms = cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
+  cmd->add_flag("--xyz", a->xyz, "Folder rows in XYZ order (y from the north): the default, as gdal2tiles --xyz")->excludes(tms);
   cmd->add_option("--halo", a->halo, "Window halo in pixels (default: from --max-distance, docs/tiles.md)");
   cmd->add_option("--max-distance", a->max_distance,
                   "Horizon search distance in ground metres (default 5000, or what --halo holds)")

@@ -39,6 +39,7 @@ struct TilesArgs {
   std::string resampling;
   std::string format = "png";
   bool tms = false;
+  bool xyz = false;  // the default; accepted in gdal2tiles' spelling
   unsigned threads = 0;
   bool quiet = false, resume = false, overwrite = false;
   std::string shard = "1/1";
@@ -200,9 +201,12 @@ int run_tiles(const TilesArgs& a) {
   meta.description = "skylit tiles -p " + a.product;
   st::validate(meta);
 
-  const auto archive = st::open_archive(a.output, archive_options);
-  const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), *archive);
-  archive->finish(meta);
+  LazyArchive archive(a.output, archive_options);
+  const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), archive);
+  if (!archive.opened())
+    throw std::invalid_argument("nothing to render: the " + std::to_string(n.empty) + " tiles of shard " + a.shard +
+                                " lie outside the DEM's valid pixels");
+  archive.finish(meta);
   if (a.webviewer == "leaflet") {
     std::string folder;
     const ViewerSpec spec = viewer_spec(a, kind, meta, folder);
@@ -234,7 +238,8 @@ void add_tiles_command(CLI::App& root, Action& run) {
                   "DEM resampling onto each zoom: near | bilinear | cubic | cubicspline | lanczos | average "
                   "(default: cubic at and above the native zoom, average below)");
   cmd->add_option("--format", a->format, "Tile image format (png)")->capture_default_str();
-  cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
+  auto* tms = cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
+  cmd->add_flag("--xyz", a->xyz, "Folder rows in XYZ order (y from the north): the default, as gdal2tiles --xyz")->excludes(tms);
   cmd->add_option("--halo", a->halo, "Window halo in pixels (default: from --max-distance, docs/tiles.md)");
   cmd->add_option("--max-distance", a->max_distance,
                   "Horizon search distance in ground metres (default 5000, or what --halo holds)")

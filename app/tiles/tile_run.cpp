@@ -26,7 +26,7 @@ std::vector<terrain::TileId> tiles_of(const terrain::TileRange& r) {
 
 RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vector<ZoomPlan>& plans,
                         const std::vector<Block>& blocks, const TileJob& job, shading::Renderer* renderer,
-                        skylit::tiles::TileArchive& archive) {
+                        LazyArchive& archive) {
   long long total = 0;
   for (const Block& b : blocks) total += b.tiles.count();
   TileProgress progress(total, job.quiet);

@@ -10,7 +10,7 @@
 #include "shading/renderer.h"
 #include "terrain/dem_tile_encoding.h"
 #include "terrain/tile_window.h"
-#include "tiles/archive.h"
+#include "app/tiles/lazy_archive.h"
 
 namespace skylit::app::tiles {
 
@@ -32,6 +32,6 @@ struct RunCounts {
 // has. `renderer` is needed for products only.
 RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vector<ZoomPlan>& plans,
                         const std::vector<Block>& blocks, const TileJob& job, shading::Renderer* renderer,
-                        skylit::tiles::TileArchive& archive);
+                        LazyArchive& archive);
 
 }  // namespace skylit::app::tiles

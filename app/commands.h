@@ -29,6 +29,12 @@ void add_bench_command(CLI::App& root, Action& run);
 
 }  // namespace skylit::app::bench
 
+namespace skylit::app::tiles {  // app/tiles/: web-map tiles
+
+void add_tiles_command(CLI::App& root, Action& run);
+
+}  // namespace skylit::app::tiles
+
 namespace skylit::app::flight {  // app/flight/: aircraft and their tracks
 
 void add_track_command(CLI::App& root, Action& run);

@@ -1,4 +1,4 @@
-// The GLSL sources compiled into the binary at build time (gpu/embed_shaders.cmake
+// The GLSL sources compiled into the binary at build time (cmake/embed_text_files.cmake
 // turns shaders/*.comp and shaders/*.glsl into a generated C++ source).
 #pragma once
 

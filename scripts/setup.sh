@@ -14,8 +14,13 @@ PACKAGES=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   libpugixml-dev libproj-dev proj-data
+  libsqlite3-dev zlib1g-dev sqlite3   # tiles/: MBTiles, PMTiles staging, gzip; sqlite3 CLI for tests
   clang-16 libclang-rt-16-dev   # libFuzzer for scripts/fuzz.sh (the build itself uses g++)
+  chromium                      # headless browser for the tile viewer's test (tests/web)
 )
+# tests/web runs on node + npm: Debian's, unless a node is installed already (NodeSource's
+# nodejs ships its own npm and conflicts with Debian's npm package).
+command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 upgrade=false
 case "${1:-}" in
   "") ;;

@@ -5,6 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The browser and PMTiles-reader tests' npm packages, pinned by tests/web/package-lock.json.
+npm ci --prefix tests/web --no-audit --no-fund --silent
 jobs=$(nproc)
 
 run_preset() {

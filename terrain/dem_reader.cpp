@@ -360,13 +360,7 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
 
   make_north_up(f);
   // Voids only (most DEMs have none: no fill's copies and queues of the whole grid).
-  if (result.nodata_count > 0) {
-    switch (options.fill) {
-      case VoidFill::Laplace: fill_laplace(f.heights, f.valid, f.width, f.height); break;
-      case VoidFill::Nearest: fill_nearest(f.heights, f.valid, f.width, f.height); break;
-      case VoidFill::Minimum: fill_constant(f.heights, f.valid, static_cast<float>(lo)); break;
-    }
-  }
+  if (result.nodata_count > 0) fill_voids(f, options.fill);
   // Outputs need a nodata value wherever the input had voids.
   f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
 
@@ -379,6 +373,21 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
 }
 
 }  // namespace
+
+void fill_voids(HeightField& f, VoidFill fill) {
+  const std::size_t n = static_cast<std::size_t>(f.width) * f.height;
+  if (f.width < 1 || f.height < 1 || f.heights.size() != n || f.valid.size() != n)
+    throw DemError("fill_voids: heights and mask do not match the grid size");
+  float lo = std::numeric_limits<float>::infinity();
+  for (std::size_t k = 0; k < n; ++k)
+    if (f.valid[k]) lo = std::min(lo, f.heights[k]);
+  if (!std::isfinite(lo)) throw DemError("fill_voids: no valid height to fill from");
+  switch (fill) {
+    case VoidFill::Laplace: fill_laplace(f.heights, f.valid, f.width, f.height); break;
+    case VoidFill::Nearest: fill_nearest(f.heights, f.valid, f.width, f.height); break;
+    case VoidFill::Minimum: fill_constant(f.heights, f.valid, lo); break;
+  }
+}
 
 DemReadResult read_dem(const std::vector<std::string>& paths, const DemReadOptions& options) {
   detail::ensure_gdal_registered();

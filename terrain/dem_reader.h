@@ -91,6 +91,10 @@ DemReadResult read_dem(const std::vector<std::string>& paths, const DemReadOptio
 DemInfo inspect_dem(const std::string& path);
 DemInfo inspect_dem(const std::vector<std::string>& paths);
 
+// Fills the voids (valid == 0) of `field.heights` by `fill`, as the reader does; the
+// mask is unchanged. Needs at least one valid texel (throws DemError otherwise).
+void fill_voids(HeightField& field, VoidFill fill);
+
 // Geographic DEMs reaching nearer a pole than this are refused with a clear error.
 inline constexpr double kMaxGeographicLatitudeDeg = 89.0;
 

@@ -6,6 +6,7 @@
 #include "terrain/height_field.h"
 
 #include <optional>
+#include <vector>
 
 namespace skylit::terrain {
 
@@ -18,5 +19,12 @@ struct LatLon {
 // georeference has no CRS or no geotransform; throws DemError when the CRS cannot be
 // parsed or transformed to WGS 84.
 std::optional<LatLon> grid_centre_lat_lon(const GeoReference& georef, int width, int height);
+
+// The same for any points in pixel coordinates (column, row; pixel edges at integers,
+// (0, 0) the top-left corner), through one transformation.
+struct PixelPoint {
+  double column = 0.0, row = 0.0;
+};
+std::optional<std::vector<LatLon>> grid_points_lat_lon(const GeoReference& georef, const std::vector<PixelPoint>& points);
 
 }  // namespace skylit::terrain

@@ -13,6 +13,7 @@
 #include "app/shade/sphere_input.h"
 #include "app/shade/tracked_aircraft.h"
 #include "app/common/altitude_arg.h"
+#include "app/common/lighting_args.h"
 #include "shading/blocker_frame.h"
 #include "gpu/renderer_factory.h"
 #include "gpu/timer.h"
@@ -73,39 +74,13 @@ struct ShadeArgs {
   std::string tint_blend = "multiply:0.75";
   ColorReliefArgs color;  // -p color-relief: --color, --alpha, --exact/--nearest-color-entry
   bool timings = false;
-  shading::LightingRequest lighting;
-  bool no_sun = false;
+  LightingArgs light;  // --time, the sun, the sky, --no-sun, --tone
   std::size_t max_frames = shading::kDefaultMaxFrames;
   std::string spheres;  // --spheres FILE.csv
   std::string track;    // --track FILE
   std::string aircraft = "glider";
   std::string altitude = "gnss";
-  std::string tone = "auto";
 };
-
-// --tone auto: linear codes for a grey relief (a hillshade, as gdaldem stores it), the
-// sRGB curve for a colour sky's picture.
-shading::ToneCurve tone_curve(const ShadeArgs& a) {
-  if (a.tone == "linear") return shading::ToneCurve::Linear;
-  if (a.tone == "srgb") return shading::ToneCurve::Srgb;
-  const auto kind = shading::parse_sky_spec(a.lighting.sky).kind;
-  const bool colour = kind == shading::SkySpec::Kind::Preetham || kind == shading::SkySpec::Kind::EnvMap;
-  return colour ? shading::ToneCurve::Srgb : shading::ToneCurve::Linear;
-}
-
-// The library's default `shaded` (uniform sky of radiance 1, no sun: open flat ground
-// white) is what --no-sun gives when nothing else about the light is asked for.
-bool sky_only_default(const ShadeArgs& a) {
-  const auto& l = a.lighting;
-  return a.no_sun && l.time.empty() && !l.sun_azimuth_deg && !l.sun_elevation_deg && l.sky == "uniform";
-}
-
-// The DEM's centre (WGS 84) and height there, for the sun's position.
-std::optional<sky::Observer> dem_place(const terrain::HeightField& f) {
-  const auto at = terrain::grid_centre_lat_lon(f.georef, f.width, f.height);
-  if (!at) return std::nullopt;
-  return sky::Observer{at->latitude_deg, at->longitude_deg, f.at(f.width / 2, f.height / 2)};
-}
 
 // `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
 // from the renderer (shading/renderer.h FrameTimings says which clock each uses).
@@ -202,7 +177,7 @@ constexpr std::size_t kMaxSeriesFileBytes = std::size_t{4} << 30;
 // The frames of --time when it is a series (an interval, a list of several times, a
 // date) or the product is a sum over time; nullopt for a single time or none.
 std::optional<shading::TimeSpec> series_spec(const ShadeArgs& a, const std::optional<shading::SummedProduct>& summed) {
-  if (a.lighting.time.empty()) {
+  if (a.light.request.time.empty()) {
     if (summed)
       throw std::invalid_argument("-p " + a.product + " sums over time: give --time as an interval "
                                   "(2026-06-21T04:00Z/2026-06-21T20:00Z/PT10M), a list of times or a date (2026-06-21)");
@@ -212,7 +187,7 @@ std::optional<shading::TimeSpec> series_spec(const ShadeArgs& a, const std::opti
   o.max_frames = a.max_frames;
   shading::TimeSpec spec;
   try {
-    spec = shading::parse_time_spec(a.lighting.time, o);
+    spec = shading::parse_time_spec(a.light.request.time, o);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("--time: " + std::string(e.what()) +
                                 (std::string(e.what()).find("frames") != std::string::npos ? " (raise --max-frames)" : ""));
@@ -221,15 +196,15 @@ std::optional<shading::TimeSpec> series_spec(const ShadeArgs& a, const std::opti
     if (summed) throw std::invalid_argument("-p " + a.product + " sums over time: one --time is no interval");
     return std::nullopt;
   }
-  if (a.lighting.sun_azimuth_deg || a.lighting.sun_elevation_deg)
+  if (a.light.request.sun_azimuth_deg || a.light.request.sun_elevation_deg)
     throw std::invalid_argument("a --time series moves the sun: give no --sun-azimuth or --sun-elevation");
   return spec;
 }
 
 // The place of a series' sun: --lat/--lon, else the DEM's centre.
 std::optional<sky::Observer> series_place(const ShadeArgs& a, const terrain::HeightField& field) {
-  if (a.lighting.latitude_deg && a.lighting.longitude_deg)
-    return sky::Observer{*a.lighting.latitude_deg, *a.lighting.longitude_deg, a.lighting.height_m};
+  if (a.light.request.latitude_deg && a.light.request.longitude_deg)
+    return sky::Observer{*a.light.request.latitude_deg, *a.light.request.longitude_deg, a.light.request.height_m};
   auto place = dem_place(field);
   if (!place) throw std::invalid_argument("--time needs the DEM's location, but the DEM has no CRS: give --lat and --lon");
   return place;
@@ -263,7 +238,7 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
   const shading::TimeSeries series = shading::resolve_time_series(times, job.place);
   if (!series.note.empty() && !a.quiet) std::cerr << "skylit: note: " << series.note << "\n";
   if (series.instants.empty() && !summed)
-    throw std::invalid_argument("--time " + a.lighting.time + ": no frames (" + series.note + ")");
+    throw std::invalid_argument("--time " + a.light.request.time + ": no frames (" + series.note + ")");
   job.instants = series.instants;
   if (summed) {
     job.outputs.files.push_back(std::move(summed_out));
@@ -311,9 +286,9 @@ int run_shade(const ShadeArgs& a) {
   OutputSpec out;
   if (!times || summed) out = resolve_output(a.output, a.format, *product, a.creation_options, a.overwrite);
   const gpu::Backend backend = parse_backend_arg(a.backend);
-  const bool lit = kind.needs_sun || (kind.lit && !sky_only_default(a));
-  shading::LightingRequest request = a.lighting;
-  request.sun = !a.no_sun;
+  const bool lit = kind.needs_sun || (kind.lit && !sky_only_default(a.light));
+  shading::LightingRequest request = a.light.request;
+  request.sun = !a.light.no_sun;
   if (times) request.time.clear();  // each frame sets its own
   if (lit) shading::validate(request);  // before reading the DEM
   try {
@@ -344,7 +319,7 @@ int run_shade(const ShadeArgs& a) {
   const std::vector<blockers::Sphere> spheres = to_field_frame(field, crs_spheres);
   std::optional<TrackedAircraft> aircraft;
   if (!a.track.empty()) {
-    if (a.lighting.time.empty())
+    if (a.light.request.time.empty())
       throw std::invalid_argument("--track needs --time: the time (or series) at which to place the aircraft");
     aircraft.emplace(a.track, a.aircraft, parse_altitude_arg(a.altitude), field);
     if (!a.quiet) std::cerr << "skylit: aircraft: " << aircraft->summary() << "\n";
@@ -357,9 +332,9 @@ int run_shade(const ShadeArgs& a) {
   shading::ProductOptions opt = a.options;
   opt.march.curvature.enabled = !a.no_curvature;
   opt.threads = a.threads;
-  opt.shaded.tone = tone_curve(a);
+  opt.shaded.tone = tone_curve(a.light);
   if (kind.local)
-    opt.hillshade = hillshade_options(a.hillshade, a.z_factor, a.lighting.sun_azimuth_deg, a.lighting.sun_elevation_deg,
+    opt.hillshade = hillshade_options(a.hillshade, a.z_factor, a.light.request.sun_azimuth_deg, a.light.request.sun_elevation_deg,
                                       a.compute_edges);
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
@@ -367,9 +342,9 @@ int run_shade(const ShadeArgs& a) {
     return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres,
                             aircraft);
   const std::vector<blockers::Sphere> frame_spheres =
-      spheres_at(spheres, aircraft, aircraft ? sky::parse_utc_time(a.lighting.time).unix_seconds : 0.0);
+      spheres_at(spheres, aircraft, aircraft ? sky::parse_utc_time(a.light.request.time).unix_seconds : 0.0);
   if (aircraft && frame_spheres.size() == spheres.size() && !a.quiet)
-    std::cerr << "skylit: note: --track: no aircraft is flying at " << a.lighting.time << " (" << aircraft->summary()
+    std::cerr << "skylit: note: --track: no aircraft is flying at " << a.light.request.time << " (" << aircraft->summary()
               << ")\n";
   if (lit) {
     const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(field) : std::nullopt);
@@ -478,13 +453,7 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
   cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
   cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the tone curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
-  cmd->add_option("--tone", args->tone,
-                  "8-bit tone curve of shaded: linear (codes proportional to irradiance, as gdaldem's hillshade), "
-                  "srgb (a picture), auto (linear for grey skies, srgb for colour skies)")
-      ->check(CLI::IsMember({"auto", "linear", "srgb"}))
-      ->capture_default_str();
-  auto& l = args->lighting;
-  cmd->add_option("--time", l.time,
+  add_lighting_options(*cmd, args->light,
                   "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "
                   "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon); a series: an interval "
                   "START/END/STEP (2026-06-21T04:00Z/2026-06-21T20:00Z/PT15M), a comma-separated list, or a date "
@@ -507,20 +476,6 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str();
-  cmd->add_option("--lat", l.latitude_deg, "Latitude for --time, degrees north (default: the DEM's centre)");
-  cmd->add_option("--lon", l.longitude_deg, "Longitude for --time, degrees east (default: the DEM's centre)");
-  cmd->add_option("--sun-azimuth,--azimuth", l.sun_azimuth_deg,
-                  "Sun azimuth, degrees from north clockwise (gdaldem -az; default 315 without --time)");
-  cmd->add_option("--sun-elevation,--altitude", l.sun_elevation_deg,
-                  "Sun elevation above the horizon, degrees (gdaldem -alt; default 45 without --time)");
-  cmd->add_option("--sky", l.sky, "Sky: uniform | preetham | cie:<1..16> | an equirectangular .hdr/.exr map")
-      ->capture_default_str();
-  cmd->add_option("--turbidity", l.turbidity, "Clear-sky turbidity (sun DNI, sky level), 1.7..10")->capture_default_str();
-  cmd->add_option("--sky-scale", l.sky_scale, "Multiplier of .hdr/.exr sky pixel values (to W m^-2 sr^-1)")
-      ->capture_default_str();
-  cmd->add_flag("--no-sun", args->no_sun,
-                "Sky light only; with nothing else about the light, the classic uniform-sky relief "
-                "(open flat ground white)");
   cmd->add_option("--backend", args->backend,
                   "Compute backend: auto (GPU where an OpenGL 4.5 context exists and the GPU has the product, "
                   "else reference) | gpu | reference (CPU, double precision)")

@@ -1,0 +1,270 @@
+// `skylit tiles DEM... -o OUT`: web-map tiles (XYZ/TMS folder, MBTiles, PMTiles) of a
+// shading product or a DEM encoding, per zoom from windows with a halo (docs/tiles.md).
+// Every check that can fail is made before the archive is opened, so a bad run leaves
+// no output behind.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/common/lighting_args.h"
+#include "app/shade/hillshade_args.h"
+#include "app/tiles/merge_cmd.h"
+#include "app/tiles/tile_plan.h"
+#include "app/tiles/tile_run.h"
+#include "app/tiles/web_viewer.h"
+#include "gpu/renderer_factory.h"
+#include "shading/quality.h"
+#include "terrain/dem_reader.h"
+#include "tiles/metadata.h"
+
+namespace skylit::app::tiles {
+namespace {
+
+namespace st = skylit::tiles;
+
+// Deepest zoom the command renders: 2^24 tiles a side is ~2 cm pixels, beyond any DEM.
+constexpr int kMaxCommandZoom = 24;
+
+struct TilesArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string product = "shaded";
+  std::string zoom;  // "A-B" or "Z"; empty: native − 5 … native
+  int tile_size = 256;
+  std::string resampling;
+  std::string format = "png";
+  bool tms = false;
+  bool xyz = false;  // the default; accepted in gdal2tiles' spelling
+  unsigned threads = 0;
+  bool quiet = false, resume = false, overwrite = false;
+  std::string shard = "1/1";
+  std::optional<int> halo;
+  std::optional<double> max_distance;
+  std::string quality = "default";
+  std::string name;
+  std::string webviewer = "none";
+  LightingArgs light;
+};
+
+// -w leaflet: the page beside a .pmtiles file, or inside a tile folder (as gdal2tiles).
+ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileMetadata& meta, std::string& folder) {
+  namespace fs = std::filesystem;
+  const fs::path out(a.output);
+  ViewerSpec v;
+  v.title = meta.name;
+  v.kind = kind == st::ArchiveKind::PMTiles ? ViewerSpec::Kind::Pmtiles : ViewerSpec::Kind::Folder;
+  v.url = kind == st::ArchiveKind::PMTiles ? out.filename().string() : ".";
+  folder = kind == st::ArchiveKind::PMTiles ? (out.has_parent_path() ? out.parent_path().string() : ".") : a.output;
+  v.tms = a.tms;
+  v.format = "png";
+  v.tile_size = a.tile_size;
+  v.minzoom = meta.minzoom;
+  v.maxzoom = meta.maxzoom;
+  v.bounds = {meta.bounds.west, meta.bounds.south, meta.bounds.east, meta.bounds.north};
+  v.attribution = "skylit";
+  return v;
+}
+
+terrain::ZoomRange parse_zoom(const std::string& text, int native) {
+  if (text.empty()) return terrain::default_zoom_range(native);
+  const auto bad = [&](const std::string& why) { return std::invalid_argument("--zoom '" + text + "': " + why); };
+  const auto number = [&](const std::string& s) {
+    if (s.empty() || s.size() > 3 || s.find_first_not_of("0123456789") != std::string::npos)
+      throw bad("not Z or A-B (e.g. 8-13)");
+    return std::stoi(s);
+  };
+  const auto dash = text.find('-');
+  terrain::ZoomRange r;
+  r.min = number(text.substr(0, dash));
+  r.max = dash == std::string::npos ? r.min : number(text.substr(dash + 1));
+  if (r.max > kMaxCommandZoom) throw bad("zooms run 0…" + std::to_string(kMaxCommandZoom));
+  if (r.min > r.max) throw bad("the first zoom is above the second");
+  return r;
+}
+
+st::OpenMode open_mode(const TilesArgs& a) {
+  if (a.resume && a.overwrite) throw std::invalid_argument("give --resume or --overwrite, not both");
+  if (a.resume) return st::OpenMode::Resume;
+  if (a.overwrite) return st::OpenMode::Overwrite;
+  std::error_code ec;
+  if (std::filesystem::exists(a.output, ec))
+    throw std::invalid_argument("output '" + a.output + "' exists: pass --resume to complete it or --overwrite to replace it");
+  return st::OpenMode::Create;
+}
+
+// The product or DEM encoding of -p, with what it needs from the light options.
+void choose_product(const TilesArgs& a, TileJob& job) {
+  if (a.product == "terrain-rgb") job.encoding = terrain::DemEncoding::TerrainRgb;
+  else if (a.product == "terrarium") job.encoding = terrain::DemEncoding::Terrarium;
+  else if (const auto p = shading::parse_product(a.product); p && *p != shading::Product::Horizon) job.product = p;
+  else
+    throw std::invalid_argument("unknown -p '" + a.product +
+                                "' (shaded, hillshade, skyview, svf, shadow, irradiance, terrain-rgb, terrarium)");
+}
+
+terrain::HeightField read_input(const TilesArgs& a) {
+  if (a.inputs.empty()) throw std::invalid_argument("no DEM given");
+  auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front()) : terrain::read_dem(a.inputs);
+  if (!a.quiet)
+    for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
+  return std::move(result.field);
+}
+
+int run_tiles(const TilesArgs& a) {
+  if (a.output.empty()) throw std::invalid_argument("no output given (-o OUT.mbtiles, OUT.pmtiles or a folder)");
+  const st::ArchiveKind kind = st::archive_kind(a.output);  // "out.zip" fails here
+  if (a.tms && kind != st::ArchiveKind::Folder)
+    throw std::invalid_argument("--tms orders a folder's rows; MBTiles rows are TMS and PMTiles XYZ by their specs");
+  if (a.webviewer == "leaflet" && kind == st::ArchiveKind::MBTiles)
+    throw std::invalid_argument("-w leaflet: a web page cannot read MBTiles; write a .pmtiles file or a folder");
+  if (a.format != "png")
+    throw std::invalid_argument("--format " + a.format + ": this build writes png tiles only");
+  st::ArchiveOptions archive_options;
+  archive_options.mode = open_mode(a);
+  archive_options.scheme = a.tms ? st::Scheme::Tms : st::Scheme::Xyz;
+  const Shard shard = parse_shard(a.shard);
+  TileJob job;
+  job.tile_size = a.tile_size;
+  job.quiet = a.quiet;
+  choose_product(a, job);
+  if (!a.resampling.empty()) {
+    job.resampling = terrain::parse_resampling(a.resampling);
+    if (!job.resampling) throw std::invalid_argument("unknown -r '" + a.resampling + "' (near, bilinear, cubic, cubicspline, lanczos, average)");
+  }
+  shading::LightingRequest request = a.light.request;
+  request.sun = !a.light.no_sun;
+  bool lit = false;
+  if (job.product) {
+    shading::apply_quality(*shading::parse_quality(a.quality), job.options);
+    job.options.threads = a.threads;
+    job.options.shaded.tone = tone_curve(a.light);
+    const shading::ProductTraits& t = shading::traits(*job.product);
+    lit = t.needs_sun || (t.lit && !sky_only_default(a.light));
+    if (lit) shading::validate(request);
+    if (t.local)
+      job.options.hillshade = shade::hillshade_options({}, 1.0, request.sun_azimuth_deg, request.sun_elevation_deg, true);
+  }
+
+  const terrain::HeightField dem = read_input(a);
+  const terrain::TileWindowSource source(dem);  // a DEM without a CRS fails here
+  const terrain::ZoomRange zooms = parse_zoom(a.zoom, source.native_zoom(a.tile_size));
+  const terrain::LonLatBox ll = terrain::dem_lon_lat_bounds(dem);
+  const terrain::MercatorBox box = terrain::dem_mercator_bounds(dem);
+  const double poleward = std::max(std::abs(ll.south), std::abs(ll.north));
+  std::vector<ZoomPlan> plans;
+  std::vector<Block> all;
+  for (int z = zooms.min; z <= zooms.max; ++z) {
+    plans.push_back(plan_zoom(box, poleward, z, a.tile_size, {a.halo, a.max_distance}));
+    const auto b = blocks(plans.back(), a.tile_size);
+    all.insert(all.end(), b.begin(), b.end());
+  }
+  const std::vector<Block> mine = shard_blocks(all, shard);
+  if (std::none_of(dem.valid.begin(), dem.valid.end(), [](std::uint8_t v) { return v != 0; }))
+    throw std::invalid_argument("nothing to render: the DEM has no valid heights");
+  if (mine.empty())
+    throw std::invalid_argument("nothing to render: shard " + a.shard + " gets none of the " + std::to_string(all.size()) +
+                                " window blocks; use fewer shards");
+  if (lit) {
+    const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(dem) : std::nullopt);
+    job.options.lighting = resolved.lighting;
+    if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
+  }
+  std::unique_ptr<shading::Renderer> renderer;
+  if (job.product) {
+    renderer = gpu::make_renderer(gpu::Backend::Auto, [&a](const std::string& note) {
+      if (!a.quiet) std::cerr << "skylit: note: " << note << "\n";
+    });
+    if (const auto why = renderer->lacks(*job.product, job.options)) throw std::invalid_argument(*why);
+  }
+  if (!a.quiet) {
+    std::cerr << "skylit: zooms " << zooms.min << "-" << zooms.max << " (native " << source.native_zoom(a.tile_size)
+              << "), " << mine.size() << " of " << all.size() << " window blocks (shard " << shard.index << "/"
+              << shard.count << ")" << (job.product ? "; halo and horizon distance:" : "");
+    for (const ZoomPlan& p : plans)
+      if (job.product) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
+    std::cerr << "\n";
+  }
+
+  st::TileMetadata meta;
+  meta.name = a.name.empty() ? std::filesystem::path(a.inputs.front()).stem().string() + " " + a.product : a.name;
+  meta.format = st::TileFormat::Png;
+  const auto e7 = st::at_e7_precision;
+  meta.bounds = {e7(ll.west), e7(ll.south), e7(ll.east), e7(ll.north)};
+  meta.center = {e7(0.5 * (ll.west + ll.east)), e7(0.5 * (ll.south + ll.north)), zooms.min};
+  meta.minzoom = zooms.min;
+  meta.maxzoom = zooms.max;
+  meta.description = "skylit tiles -p " + a.product;
+  st::validate(meta);
+
+  LazyArchive archive(a.output, archive_options);
+  const RunCounts n = render_blocks(source, plans, mine, job, renderer.get(), archive);
+  if (!archive.opened())
+    throw std::invalid_argument("nothing to render: the " + std::to_string(n.empty) + " tiles of shard " + a.shard +
+                                " lie outside the DEM's valid pixels");
+  archive.finish(meta);
+  if (a.webviewer == "leaflet") {
+    std::string folder;
+    const ViewerSpec spec = viewer_spec(a, kind, meta, folder);
+    write_leaflet_viewer(folder, spec);
+    if (!a.quiet) std::cerr << "skylit: wrote " << (std::filesystem::path(folder) / "index.html").string() << "\n";
+  }
+  if (!a.quiet)
+    std::cerr << "skylit: wrote " << a.output << ": " << n.written << " tiles (" << n.skipped
+              << " already complete, " << n.empty << " outside the DEM)"
+              << (renderer ? ", computed on " + renderer->description() : std::string()) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_tiles_command(CLI::App& root, Action& run) {
+  auto a = std::make_shared<TilesArgs>();
+  auto* cmd = root.add_subcommand("tiles", "Web-map tiles (XYZ/TMS folder, MBTiles, PMTiles) of a shading product "
+                                           "or Terrain-RGB/Terrarium heights (docs/tiles.md)");
+  cmd->add_option("DEM", a->inputs, "DEM raster(s) with a CRS (several are mosaicked)");
+  cmd->add_option("-o,--output", a->output, "OUT.mbtiles, OUT.pmtiles, or a folder OUT/{z}/{x}/{y}.png");
+  cmd->add_option("-p,--product", a->product,
+                  "shaded | hillshade | skyview | svf | shadow | irradiance | terrain-rgb | terrarium")
+      ->capture_default_str();
+  cmd->add_option("-z,--zoom", a->zoom, "Zoom Z or range A-B, 0..24 (default: native-5 .. native)");
+  cmd->add_option("--tile-size,--tilesize", a->tile_size, "Tile side in pixels")
+      ->check(CLI::IsMember({256, 512}))->capture_default_str();
+  cmd->add_option("-r,--resampling", a->resampling,
+                  "DEM resampling onto each zoom: near | bilinear | cubic | cubicspline | lanczos | average "
+                  "(default: cubic at and above the native zoom, average below)");
+  cmd->add_option("--format", a->format, "Tile image format (png)")->capture_default_str();
+  auto* tms = cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
+  cmd->add_flag("--xyz", a->xyz, "Folder rows in XYZ order (y from the north): the default, as gdal2tiles --xyz")->excludes(tms);
+  cmd->add_option("--halo", a->halo, "Window halo in pixels (default: from --max-distance, docs/tiles.md)");
+  cmd->add_option("--max-distance", a->max_distance,
+                  "Horizon search distance in ground metres (default 5000, or what --halo holds)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--shard", a->shard, "Render shard i of N (1-based, i/N): a cost-balanced share of the window blocks")
+      ->capture_default_str();
+  cmd->add_option("--quality", a->quality, "Preset: fast | default | high (docs/quality-presets.md)")
+      ->check(CLI::IsMember({"fast", "default", "high"}))->capture_default_str();
+  add_lighting_options(*cmd, a->light,
+                       "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z (place: the "
+                       "DEM's centre, or --lat/--lon); one time, not a series");
+  cmd->add_option("--name", a->name, "Archive name in its metadata (default: the DEM's file name and the product)");
+  cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer (0: all cores)")->capture_default_str();
+  cmd->add_option("-w,--webviewer", a->webviewer,
+                  "leaflet: an index.html showing the tiles on a Leaflet map (beside a .pmtiles file, inside a "
+                  "folder; Leaflet and pmtiles.js inlined) | none")
+      ->check(CLI::IsMember({"none", "leaflet"}))->capture_default_str();
+  cmd->add_flag("-e,--resume", a->resume, "Complete an interrupted run: keep its finished tiles");
+  cmd->add_flag("--overwrite", a->overwrite, "Replace OUT if it exists");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress or notes");
+  CLI::App* merge = add_merge_subcommand(*cmd, run);
+  cmd->callback([&run, a, merge] {
+    if (merge->parsed()) return;  // `skylit tiles merge …` set its own action
+    run = [a] { return run_tiles(*a); };
+  });
+}
+
+}  // namespace skylit::app::tiles

@@ -1,0 +1,78 @@
+#include "app/tiles/tile_image.h"
+
+#include <cpl_conv.h>
+#include <cpl_vsi.h>
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace skylit::app::tiles {
+
+std::uint8_t product_code(shading::Product product, float value) {
+  double v = value;
+  if (product == shading::Product::Irradiance) v *= 255.0 / kIrradianceFullScale;
+  else if (!shading::traits(product).eight_bit) v *= 255.0;
+  return static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));
+}
+
+std::vector<std::uint8_t> product_tile_rgba(shading::Product product, const shading::ProductBands& bands,
+                                            const terrain::HeightField& field, const terrain::PixelRect& rect) {
+  if (bands.width != field.width || bands.height != field.height || (bands.bands != 1 && bands.bands != 3))
+    throw std::invalid_argument("tile image: the frame's bands do not match the window");
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(rect.width) * rect.height * 4, 0);
+  for (int j = 0; j < rect.height; ++j)
+    for (int i = 0; i < rect.width; ++i) {
+      const int x = rect.x0 + i, y = rect.y0 + j;
+      std::uint8_t* px = &rgba[(static_cast<std::size_t>(j) * rect.width + i) * 4];
+      if (!field.is_valid(x, y)) continue;
+      bool finite = true;
+      for (int c = 0; c < 3; ++c) {
+        const float v = bands.at(bands.bands == 3 ? c : 0, x, y);
+        finite = finite && std::isfinite(v);
+        px[c] = finite ? product_code(product, v) : 0;
+      }
+      if (finite) px[3] = 255;
+      else std::fill(px, px + 4, std::uint8_t{0});
+    }
+  return rgba;
+}
+
+bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect) {
+  for (int y = rect.y0; y < rect.y1(); ++y)
+    for (int x = rect.x0; x < rect.x1(); ++x)
+      if (field.is_valid(x, y)) return true;
+  return false;
+}
+
+std::string encode_png(int size, const std::vector<std::uint8_t>& rgba) {
+  GDALAllRegister();
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
+  if (!mem || !png) throw std::runtime_error("GDAL lacks its MEM or PNG driver");
+  std::unique_ptr<GDALDataset> src(mem->Create("", size, size, 4, GDT_Byte, nullptr));
+  if (!src) throw std::runtime_error("cannot create an in-memory tile");
+  // Pixel-interleaved RGBA rows into four bands.
+  if (src->RasterIO(GF_Write, 0, 0, size, size, const_cast<std::uint8_t*>(rgba.data()), size, size, GDT_Byte, 4,
+                    nullptr, 4, 4 * size, 1) != CE_None)
+    throw std::runtime_error("cannot fill an in-memory tile");
+  src->GetRasterBand(4)->SetColorInterpretation(GCI_AlphaBand);
+  // A unique /vsimem/ name per thread; no .aux.xml beside it (GDAL_PAM_ENABLED off).
+  const std::string name = "/vsimem/skylit_tile_" + std::to_string(reinterpret_cast<std::uintptr_t>(&size)) + ".png";
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+  const char* options[] = {"WORLDFILE=NO", nullptr};
+  std::unique_ptr<GDALDataset> out(png->CreateCopy(name.c_str(), src.get(), FALSE, const_cast<char**>(options),
+                                                   nullptr, nullptr));
+  if (!out) throw std::runtime_error("cannot encode a PNG tile: " + std::string(CPLGetLastErrorMsg()));
+  out.reset();
+  vsi_l_offset length = 0;
+  GByte* data = VSIGetMemFileBuffer(name.c_str(), &length, TRUE);
+  if (!data) throw std::runtime_error("cannot read back a PNG tile");
+  std::string bytes(reinterpret_cast<const char*>(data), static_cast<std::size_t>(length));
+  CPLFree(data);
+  return bytes;
+}
+
+}  // namespace skylit::app::tiles

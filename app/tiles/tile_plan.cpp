@@ -1,0 +1,115 @@
+#include "app/tiles/tile_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+namespace skylit::app::tiles {
+namespace {
+
+// Rows a window may have at this zoom before its single dy strays kMaxDyError from its
+// rows' exact spacing: TileWindow's estimate sin φ · rows · π / (T · 2^z).
+double max_window_rows(int z, int tile_size, double poleward_latitude_deg) {
+  const double s = std::sin(std::abs(poleward_latitude_deg) * std::numbers::pi / 180.0);
+  const double per_row = s * std::numbers::pi / (tile_size * static_cast<double>(terrain::tiles_per_side(z)));
+  return per_row > 0 ? kMaxDyError / per_row : 1e300;
+}
+
+}  // namespace
+
+ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latitude_deg, int z, int tile_size,
+                   const HaloRequest& request) {
+  ZoomPlan p;
+  p.z = z;
+  p.covering = terrain::tiles_covering(dem_bounds, z);
+  const double g = terrain::ground_pixel_size(z, poleward_latitude_deg, tile_size);
+  if (request.halo) {
+    p.halo = *request.halo;
+    if (p.halo <= kKernelMargin || p.halo > kMaxUserHalo)
+      throw std::invalid_argument("--halo " + std::to_string(p.halo) + " is outside " + std::to_string(kKernelMargin + 1) +
+                                  "…" + std::to_string(kMaxUserHalo) + " pixels");
+    p.max_distance_m = (p.halo - kKernelMargin) * g;
+    if (request.max_distance) p.max_distance_m = std::min(p.max_distance_m, *request.max_distance);
+  } else if (request.max_distance) {
+    const double h = std::ceil(*request.max_distance / g) + kKernelMargin;
+    if (h > kMaxUserHalo)
+      throw std::invalid_argument("--max-distance " + std::to_string(*request.max_distance) + " needs a halo of " +
+                                  std::to_string(static_cast<long long>(h)) + " pixels at zoom " + std::to_string(z) +
+                                  " (at most " + std::to_string(kMaxUserHalo) + "): give a smaller distance or zoom");
+    p.halo = static_cast<int>(h);
+    p.max_distance_m = *request.max_distance;
+  } else {
+    const double h = std::ceil(kDefaultMaxDistanceM / g) + kKernelMargin;
+    p.halo = static_cast<int>(std::clamp(h, double(kMinHalo), double(kMaxHalo)));
+    p.max_distance_m = std::min(kDefaultMaxDistanceM, (p.halo - kKernelMargin) * g);
+  }
+  p.block_columns = std::max(1, kBlockPixels / tile_size);
+  const double rows = max_window_rows(z, tile_size, poleward_latitude_deg);
+  p.block_rows = 1;
+  while (p.block_rows * 2 <= p.block_columns && (p.block_rows * 2) * tile_size + 2 * p.halo <= rows) p.block_rows *= 2;
+  return p;
+}
+
+std::vector<Block> blocks(const ZoomPlan& plan, int tile_size) {
+  std::vector<Block> out;
+  const terrain::TileRange& c = plan.covering;
+  if (c.empty()) return out;
+  const int bw = plan.block_columns, bh = plan.block_rows;
+  for (int by = c.y0 / bh; by <= c.y1 / bh; ++by)
+    for (int bx = c.x0 / bw; bx <= c.x1 / bw; ++bx) {
+      Block b;
+      b.z = plan.z;
+      b.column = bx;
+      b.row = by;
+      b.tiles = {plan.z, std::max(c.x0, bx * bw), std::max(c.y0, by * bh), std::min(c.x1, bx * bw + bw - 1),
+                 std::min(c.y1, by * bh + bh - 1)};
+      const double w = b.tiles.columns() * double(tile_size) + 2 * plan.halo;
+      const double h = b.tiles.rows() * double(tile_size) + 2 * plan.halo;
+      b.cost = w * h;
+      out.push_back(b);
+    }
+  return out;
+}
+
+Shard parse_shard(const std::string& text) {
+  const auto bad = [&] {
+    return std::invalid_argument("--shard '" + text + "' is not i/N with 1 ≤ i ≤ N (e.g. 1/4 … 4/4)");
+  };
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw bad();
+  const auto number = [&](const std::string& s) {
+    if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+      throw bad();
+    return std::stoi(s);
+  };
+  Shard s{number(text.substr(0, slash)), number(text.substr(slash + 1))};
+  if (s.count < 1 || s.index < 1 || s.index > s.count) throw bad();
+  return s;
+}
+
+std::vector<Block> shard_blocks(const std::vector<Block>& all, const Shard& shard) {
+  std::vector<std::size_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Block &x = all[a], &y = all[b];
+    if (x.cost != y.cost) return x.cost > y.cost;
+    return std::tie(x.z, x.row, x.column) < std::tie(y.z, y.row, y.column);
+  });
+  std::vector<double> load(static_cast<std::size_t>(shard.count), 0.0);
+  std::vector<bool> mine(all.size(), false);
+  for (std::size_t k : order) {
+    const auto least = std::min_element(load.begin(), load.end()) - load.begin();  // first of equals
+    load[static_cast<std::size_t>(least)] += all[k].cost;
+    mine[k] = least == shard.index - 1;
+  }
+  std::vector<Block> out;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (mine[k]) out.push_back(all[k]);
+  return out;
+}
+
+}  // namespace skylit::app::tiles

@@ -1,0 +1,80 @@
+// What a `skylit tiles` run renders, decided before any rendering: per zoom the halo and
+// the horizon distance it makes exact, a fixed grid of window blocks, and a shard's share
+// of the blocks. Everything here is a pure function of the DEM's bounds and the options,
+// so every run (and every shard) cuts each tile from the same window: tiles are
+// byte-identical whichever run or shard renders them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "terrain/web_mercator.h"
+
+namespace skylit::app::tiles {
+
+// Default horizon search distance (ground metres): horizons farther away than this are
+// not seen. 5 km holds the ridges that shade most valleys (docs/tiles.md measures what it
+// costs against a 4× larger halo).
+inline constexpr double kDefaultMaxDistanceM = 5000.0;
+// The default halo is clamped to this pixel range: at least a few pixels at low zooms
+// (normals and pyramid kernels read past the tile), at most this many at high zooms
+// (where the distance then shrinks to what the halo holds).
+inline constexpr int kMinHalo = 16;
+inline constexpr int kMaxHalo = 256;
+// Pixels past the horizon distance that the march's pyramid and B-spline kernels read.
+inline constexpr int kKernelMargin = 8;
+// Largest halo an explicit --halo or --max-distance may ask for.
+inline constexpr int kMaxUserHalo = 4096;
+// Window blocks: at most kBlockPixels pixels of tiles per side; fewer rows where the
+// window's single north–south spacing would stray more than kMaxDyError from its rows'
+// (TileWindow::max_dy_error).
+inline constexpr int kBlockPixels = 2048;
+inline constexpr double kMaxDyError = 0.005;
+
+struct ZoomPlan {
+  int z = 0;
+  int halo = 0;                  // pixels on every side of a window
+  double max_distance_m = 0.0;   // passed to the horizon search: what the halo holds
+  int block_columns = 1, block_rows = 1;  // tiles per window block
+  terrain::TileRange covering;   // tiles over the DEM's bounds
+};
+
+struct HaloRequest {
+  std::optional<int> halo;             // --halo
+  std::optional<double> max_distance;  // --max-distance (metres, > 0)
+};
+
+// The halo/distance rule (docs/tiles.md): g = the zoom's ground pixel at the DEM's
+// poleward edge (its smallest); by default H = clamp(⌈D/g⌉ + margin, kMinHalo, kMaxHalo)
+// with D = kDefaultMaxDistanceM, and the distance passed on is (H − margin)·g capped at D,
+// so no ray of a tile pixel leaves its window. --max-distance D sets D (H unclamped),
+// --halo H sets H (and D = (H − margin)·g unless given too). Throws std::invalid_argument
+// for a halo over kMaxUserHalo or under the margin.
+ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latitude_deg, int z, int tile_size,
+                   const HaloRequest& request);
+
+struct Block {
+  int z = 0;
+  int column = 0, row = 0;       // block index on the zoom's block grid
+  terrain::TileRange tiles;      // the block's tiles that cover the DEM
+  double cost = 0.0;             // pixels to render, halo included
+  bool operator==(const Block&) const = default;
+};
+
+// The zoom's blocks: the grid of block_columns × block_rows tiles aligned to multiples of
+// that size from tile (0, 0), intersected with the covering range; in row-major order.
+std::vector<Block> blocks(const ZoomPlan& plan, int tile_size);
+
+struct Shard {
+  int index = 1, count = 1;  // 1 ≤ index ≤ count
+};
+// Parses "i/N" (1-based, 1 ≤ i ≤ N); throws std::invalid_argument naming --shard.
+Shard parse_shard(const std::string& text);
+
+// Shard i's blocks: the blocks sorted by cost (largest first, ties by zoom, row, column)
+// go one by one to the shard with the least cost so far (ties: the lowest index), so the
+// shards' costs differ by at most one block's. Returned in the input order.
+std::vector<Block> shard_blocks(const std::vector<Block>& all, const Shard& shard);
+
+}  // namespace skylit::app::tiles

@@ -1,0 +1,83 @@
+#include "app/tiles/tile_run.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "app/tiles/tile_image.h"
+#include "app/tiles/tile_progress.h"
+
+namespace skylit::app::tiles {
+namespace {
+
+const ZoomPlan& plan_of(const std::vector<ZoomPlan>& plans, int z) {
+  const auto it = std::find_if(plans.begin(), plans.end(), [z](const ZoomPlan& p) { return p.z == z; });
+  if (it == plans.end()) throw std::logic_error("tiles: no plan for zoom " + std::to_string(z));
+  return *it;
+}
+
+std::vector<terrain::TileId> tiles_of(const terrain::TileRange& r) {
+  std::vector<terrain::TileId> out;
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) out.push_back({r.z, x, y});
+  return out;
+}
+
+}  // namespace
+
+RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vector<ZoomPlan>& plans,
+                        const std::vector<Block>& blocks, const TileJob& job, shading::Renderer* renderer,
+                        LazyArchive& archive) {
+  long long total = 0;
+  for (const Block& b : blocks) total += b.tiles.count();
+  TileProgress progress(total, job.quiet);
+  RunCounts n;
+  const auto done = [&n] { return n.written + n.skipped + n.empty; };
+  for (const Block& b : blocks) {
+    const std::vector<terrain::TileId> tiles = tiles_of(b.tiles);
+    std::vector<terrain::TileId> todo;
+    for (const auto& t : tiles)
+      if (!archive.has(t)) todo.push_back(t);
+    n.skipped += static_cast<long long>(tiles.size() - todo.size());
+    if (todo.empty()) {  // complete from an earlier run: no window to render
+      progress.update(done());
+      continue;
+    }
+    const ZoomPlan& plan = plan_of(plans, b.z);
+    terrain::TileWindowOptions wo;
+    wo.tile_size = job.tile_size;
+    wo.halo = job.product ? plan.halo : 0;  // DEM encodings read no neighbours
+    wo.resampling = job.resampling;
+    const terrain::TileWindow window = source.window(b.tiles, wo);
+    if (window.empty()) {
+      n.empty += static_cast<long long>(todo.size());
+      progress.update(done());
+      continue;
+    }
+    std::optional<shading::ProductBands> bands;
+    if (job.product) {
+      shading::ProductOptions opt = job.options;
+      opt.march.max_distance_m = plan.max_distance_m;
+      renderer->set_field(window.field);
+      renderer->set_options(opt);
+      bands = renderer->frame(*job.product, {opt.lighting, {}, std::nullopt});
+    }
+    const std::size_t bytes = static_cast<std::size_t>(job.tile_size) * job.tile_size * 4;
+    for (const auto& t : todo) {
+      const terrain::PixelRect rect = window.tile_rect(t);
+      if (!any_valid(window.field, rect)) {
+        ++n.empty;
+        continue;
+      }
+      std::vector<std::uint8_t> rgba(bytes);
+      if (bands) rgba = product_tile_rgba(*job.product, *bands, window.field, rect);
+      else terrain::encode_dem_tile(*job.encoding, window.field, rect, rgba);
+      archive.put(t, skylit::tiles::as_bytes(encode_png(job.tile_size, rgba)));
+      ++n.written;
+    }
+    progress.update(done());
+  }
+  progress.finish(done());
+  return n;
+}
+
+}  // namespace skylit::app::tiles

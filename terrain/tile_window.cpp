@@ -1,0 +1,249 @@
+// Per-zoom height windows: an in-memory copy of the DEM warped by GDALWarp (the
+// library behind gdalwarp) onto a zoom's EPSG:3857 pixel grid.
+#include "terrain/tile_window.h"
+
+#include <gdal_utils.h>
+#include <ogr_spatialref.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "terrain/gdal_util.h"
+#include "terrain/geolocation.h"
+
+namespace skylit::terrain {
+namespace {
+
+using detail::DatasetPtr;
+using detail::GdalErrorCapture;
+
+constexpr std::array<std::pair<Resampling, std::string_view>, 6> kResamplingNames{{
+    {Resampling::Nearest, "near"},
+    {Resampling::Bilinear, "bilinear"},
+    {Resampling::Cubic, "cubic"},
+    {Resampling::CubicSpline, "cubicspline"},
+    {Resampling::Lanczos, "lanczos"},
+    {Resampling::Average, "average"},
+}};
+
+// Kernel radius in source pixels at scale 1 (GDAL's warper kernels).
+double kernel_radius(Resampling r) {
+  switch (r) {
+    case Resampling::Nearest: return 1.0;
+    case Resampling::Bilinear: return 1.0;
+    case Resampling::Cubic: return 2.0;
+    case Resampling::CubicSpline: return 2.0;
+    case Resampling::Lanczos: return 3.0;
+    case Resampling::Average: return 1.0;
+  }
+  return 3.0;
+}
+
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+double latitude_rad(double y) { return mercator_to_lon_lat(0.0, y).latitude_deg * std::numbers::pi / 180.0; }
+
+}  // namespace
+
+std::string_view resampling_name(Resampling r) {
+  for (const auto& [value, name] : kResamplingNames)
+    if (value == r) return name;
+  return "cubic";
+}
+
+std::optional<Resampling> parse_resampling(std::string_view name) {
+  for (const auto& [value, n] : kResamplingNames)
+    if (n == name) return value;
+  if (name == "nearest") return Resampling::Nearest;
+  return std::nullopt;
+}
+
+Resampling default_resampling(int zoom, int native) { return zoom >= native ? Resampling::Cubic : Resampling::Average; }
+
+PixelRect TileWindow::tile_rect(const TileId& t) const {
+  if (!tiles.contains(t))
+    throw std::out_of_range("tile " + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y) +
+                            " is not in this window");
+  return {halo + (t.x - tiles.x0) * tile_size, halo + (t.y - tiles.y0) * tile_size, tile_size, tile_size};
+}
+
+double TileWindow::max_dy_error() const {
+  double e = 0.0;
+  for (double d : dy_per_row) e = std::max(e, std::abs(d / field.dy - 1.0));
+  return e;
+}
+
+std::vector<std::string> WarpSettings::arguments() const {
+  return {"-t_srs", "EPSG:3857", "-r", std::string(resampling_name(resampling)), "-et", "0", "-ot", "Float32",
+          "-dstnodata", "nan", "-wo", "XSCALE=" + exact(xscale), "-wo", "YSCALE=" + exact(yscale),
+          "-wo", "SOURCE_EXTRA=" + std::to_string(source_extra)};
+}
+
+struct TileWindowSource::Impl {
+  DatasetPtr source;                 // MEM, Float32, NaN at voids
+  double centre_latitude = 0.0;      // degrees
+  double resolution_x = 0.0, resolution_y = 0.0;  // ground metres per DEM pixel
+  int native_256 = 0, native_512 = 0;
+  std::optional<double> nodata;
+};
+
+TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_unique<Impl>()) {
+  if (dem.georef.crs_wkt.empty())
+    throw DemError("the DEM has no CRS, so it cannot be warped to web-map tiles (EPSG:3857); assign one first");
+  if (!dem.georef.has_geotransform)
+    throw DemError("the DEM has no geotransform, so it cannot be warped to web-map tiles (EPSG:3857)");
+  const std::size_t n = static_cast<std::size_t>(dem.width) * dem.height;
+  if (dem.width < 1 || dem.height < 1 || dem.heights.size() != n || dem.valid.size() != n ||
+      static_cast<int>(dem.dx_per_row.size()) != dem.height)
+    throw DemError("tile window source: the height field's arrays do not match its size");
+  const std::optional<LatLon> centre = grid_centre_lat_lon(dem.georef, dem.width, dem.height);
+  impl_->centre_latitude = centre->latitude_deg;  // present: CRS and geotransform checked above
+  impl_->resolution_x = dem.dx(dem.height / 2);
+  impl_->resolution_y = dem.dy;
+  impl_->native_256 = terrain::native_zoom(dem, 256);
+  impl_->native_512 = terrain::native_zoom(dem, 512);
+  impl_->nodata = dem.nodata;
+
+  detail::ensure_gdal_registered();
+  GdalErrorCapture capture;
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  if (!mem) throw DemError("GDAL's MEM driver is missing");
+  impl_->source.reset(mem->Create("", dem.width, dem.height, 1, GDT_Float32, nullptr));
+  if (!impl_->source) throw DemError("cannot create the in-memory DEM copy: " + capture.failure());
+  GDALDataset& ds = *impl_->source;
+  std::array<double, 6> gt = dem.georef.geotransform;
+  if (ds.SetGeoTransform(gt.data()) != CE_None || ds.SetProjection(dem.georef.crs_wkt.c_str()) != CE_None)
+    throw DemError("cannot georeference the in-memory DEM copy: " + capture.failure());
+  std::vector<float> values(dem.heights);
+  bool voids = false;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!dem.valid[k]) {
+      values[k] = std::numeric_limits<float>::quiet_NaN();
+      voids = true;
+    }
+  GDALRasterBand& band = *ds.GetRasterBand(1);
+  if (voids) band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+  if (band.RasterIO(GF_Write, 0, 0, dem.width, dem.height, values.data(), dem.width, dem.height, GDT_Float32, 0, 0,
+                    nullptr) != CE_None)
+    throw DemError("cannot fill the in-memory DEM copy: " + capture.failure());
+}
+
+TileWindowSource::~TileWindowSource() = default;
+TileWindowSource::TileWindowSource(TileWindowSource&&) noexcept = default;
+TileWindowSource& TileWindowSource::operator=(TileWindowSource&&) noexcept = default;
+
+int TileWindowSource::native_zoom(int tile_size) const {
+  (void)pixel_size(0, tile_size);  // validates the tile size
+  return tile_size == 512 ? impl_->native_512 : impl_->native_256;
+}
+
+WarpSettings TileWindowSource::warp_settings(int zoom, const TileWindowOptions& options) const {
+  const double ground = ground_pixel_size(zoom, impl_->centre_latitude, options.tile_size);
+  WarpSettings s;
+  s.resampling = options.resampling.value_or(default_resampling(zoom, native_zoom(options.tile_size)));
+  // One kernel scale per zoom, from the DEM's centre: windows then agree where they
+  // overlap (GDAL's own estimate is per chunk). Upsampling keeps the kernel at scale 1.
+  s.xscale = std::min(1.0, impl_->resolution_x / ground);
+  s.yscale = std::min(1.0, impl_->resolution_y / ground);
+  // The warper pads its source window by the kernel radius over its own scale
+  // estimate; pad by ours, plus one, so the fixed kernel is never cut short.
+  s.source_extra = static_cast<int>(std::ceil(kernel_radius(s.resampling) / std::min(s.xscale, s.yscale))) + 1;
+  return s;
+}
+
+TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOptions& options) const {
+  const int n_side = tiles_per_side(tiles.z);
+  const double p = pixel_size(tiles.z, options.tile_size);
+  if (tiles.empty() || tiles.x0 < 0 || tiles.y0 < 0 || tiles.x1 >= n_side || tiles.y1 >= n_side)
+    throw std::invalid_argument("tile range " + std::to_string(tiles.x0) + "…" + std::to_string(tiles.x1) + " × " +
+                   std::to_string(tiles.y0) + "…" + std::to_string(tiles.y1) + " is empty or outside zoom " +
+                   std::to_string(tiles.z) + " (0…" + std::to_string(n_side - 1) + ")");
+  if (options.halo < 0) throw std::invalid_argument("negative halo " + std::to_string(options.halo));
+  const long long T = options.tile_size, H = options.halo;
+  const long long w = tiles.columns() * T + 2 * H, h = tiles.rows() * T + 2 * H;
+  constexpr long long kMaxPixels = 1LL << 28;
+  if (w * h > kMaxPixels || w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max())
+    throw std::invalid_argument("tile window " + std::to_string(w) + " × " + std::to_string(h) + " pixels is too large (over " +
+                   std::to_string(kMaxPixels) + ")");
+
+  // Global pixel (gx, gy) of the zoom starts at x = −S + gx·p, y = S − gy·p.
+  const long long gx0 = tiles.x0 * T - H, gy0 = tiles.y0 * T - H;
+  const double s = kWebMercatorOriginShift;
+  const double xmin = -s + static_cast<double>(gx0) * p, xmax = -s + static_cast<double>(gx0 + w) * p;
+  const double ymax = s - static_cast<double>(gy0) * p, ymin = s - static_cast<double>(gy0 + h) * p;
+
+  const WarpSettings settings = warp_settings(tiles.z, options);
+  std::vector<std::string> args = {"-of", "MEM", "-te", exact(xmin), exact(ymin), exact(xmax), exact(ymax),
+                                   "-ts", std::to_string(w), std::to_string(h)};
+  for (auto& a : settings.arguments()) args.push_back(std::move(a));
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  GdalErrorCapture capture;
+  GDALWarpAppOptions* opts = GDALWarpAppOptionsNew(argv.data(), nullptr);
+  if (!opts) throw DemError("invalid warp options: " + capture.failure());
+  GDALDatasetH src = GDALDataset::ToHandle(impl_->source.get());
+  int usage_error = 0;
+  DatasetPtr out(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &src, opts, &usage_error)));
+  GDALWarpAppOptionsFree(opts);
+  if (!out || usage_error)
+    throw DemError("cannot warp the DEM to zoom " + std::to_string(tiles.z) + ": " + capture.failure());
+
+  TileWindow win;
+  win.tiles = tiles;
+  win.tile_size = options.tile_size;
+  win.halo = options.halo;
+  win.resampling = settings.resampling;
+  HeightField& f = win.field;
+  f.width = static_cast<int>(w);
+  f.height = static_cast<int>(h);
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  f.heights.resize(n);
+  if (out->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, f.width, f.height, f.heights.data(), f.width, f.height,
+                                      GDT_Float32, 0, 0, nullptr) != CE_None)
+    throw DemError("cannot read the warped window: " + capture.failure());
+  f.valid.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    f.valid[k] = std::isnan(f.heights[k]) ? 0 : 1;
+    win.valid_count += f.valid[k];
+    if (!f.valid[k]) f.heights[k] = 0.0f;
+  }
+  if (win.valid_count > 0 && win.valid_count < n) fill_voids(f, options.fill);
+  f.nodata = impl_->nodata ? impl_->nodata
+                           : (win.valid_count < n ? std::optional<double>(-32768.0) : std::nullopt);
+
+  f.georef.geotransform = {xmin, p, 0.0, ymax, 0.0, -p};
+  out->GetGeoTransform(f.georef.geotransform.data());  // GDAL's own (xmax − xmin) / w
+  if (const OGRSpatialReference* srs = out->GetSpatialRef()) {
+    char* wkt = nullptr;
+    const char* wkt_opts[] = {"FORMAT=WKT2_2019", nullptr};
+    if (srs->exportToWkt(&wkt, wkt_opts) == OGRERR_NONE && wkt) f.georef.crs_wkt = wkt;
+    CPLFree(wkt);
+  }
+  f.georef.geographic = false;
+  f.georef.has_geotransform = true;
+
+  // Ground spacing (see the header): row j's centre latitude φ_j gives p·cos φ_j both
+  // ways; the single dy is the window's meridian arc on the sphere over its rows.
+  f.dx_per_row.resize(f.height);
+  for (int j = 0; j < f.height; ++j) {
+    const double lat_deg = mercator_to_lon_lat(0.0, ymax - (j + 0.5) * p).latitude_deg;
+    f.dx_per_row[j] = ground_pixel_size(tiles.z, lat_deg, options.tile_size);
+  }
+  win.dy_per_row = f.dx_per_row;
+  f.dy = kWebMercatorRadius * (latitude_rad(ymax) - latitude_rad(ymin)) / f.height;
+  f.revision = 0;
+  f.last_dirty = f.bounds();
+  return win;
+}
+
+}  // namespace skylit::terrain

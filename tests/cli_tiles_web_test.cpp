@@ -1,0 +1,144 @@
+// `skylit tiles -w leaflet` seen as a person sees it, and its PMTiles read by a reader
+// that is not skylit's: tests/web/viewer_test.mjs opens the page in Debian's headless
+// chromium (puppeteer-core) through a Range-capable static server and compares the
+// screenshot with the tiles the page shows; tests/web/read_pmtiles.mjs reads the
+// archive with npm's `pmtiles` (protomaps' reader), whose tiles must be the bytes of the
+// same run written as a folder. Needs node, chromium and `npm ci --prefix tests/web`
+// (scripts/test.sh runs it): skipped without them, failed where CI is set.
+#include "cli_test_util.h"
+#include "terrain_test_util.h"
+
+#include <nlohmann/json.hpp>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace skylit::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using terrain::testing::ScratchDir;
+using terrain::testing::shared_dem;
+
+const std::string kWeb = std::string(SKYLIT_SOURCE_DIR) + "/tests/web";
+
+bool preconditions_met(std::string& why) {
+  if (std::system("command -v node >/dev/null 2>&1") != 0) why = "node not on PATH";
+  else if (!fs::exists("/usr/bin/chromium") && !std::getenv("CHROMIUM")) why = "no /usr/bin/chromium (or $CHROMIUM)";
+  else if (!fs::exists(kWeb + "/node_modules/puppeteer-core") || !fs::exists(kWeb + "/node_modules/pmtiles"))
+    why = "tests/web/node_modules missing: run npm ci --prefix tests/web";
+  else if (!fs::exists(shared_dem("big_tujunga_srtm30_utm11n.tif"))) why = "../shared/dem is absent";
+  return why.empty();
+}
+
+#define REQUIRE_WEB()                                         \
+  do {                                                        \
+    std::string why;                                          \
+    if (!preconditions_met(why)) {                            \
+      if (std::getenv("CI")) FAIL() << why << " (CI is set)"; \
+      GTEST_SKIP() << why;                                    \
+    }                                                         \
+  } while (0)
+
+// stdout of a shell command, and its exit status.
+std::string capture(const std::string& cmd, int& status) {
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  std::size_t n;
+  while (pipe && (n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+  const int raw = pipe ? pclose(pipe) : -1;
+  status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return out;
+}
+
+// "z/x/y" → SHA-256 of every tile file of a folder archive, by coreutils' sha256sum.
+std::map<std::string, std::string> folder_hashes(const fs::path& root) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(root)) {
+    if (e.path().extension() != ".png") continue;
+    int status = 0;
+    const std::string line = capture("sha256sum '" + e.path().string() + "'", status);
+    const fs::path rel = fs::relative(e.path(), root);
+    const std::string key = rel.parent_path().string() + "/" + rel.stem().string();
+    out[key] = line.substr(0, line.find(' '));
+  }
+  return out;
+}
+
+class TilesWeb : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    crop_ = dir_.file("crop.tif");
+    ASSERT_EQ(std::system(("gdal_translate -q -srcwin 400 200 300 250 " + shared_dem("big_tujunga_srtm30_utm11n.tif") +
+                           " " + crop_)
+                              .c_str()),
+              0);
+  }
+  ScratchDir dir_;
+  std::string crop_;
+  const std::string flags_ = " --zoom 10-12 -p hillshade -q";
+};
+
+TEST_F(TilesWeb, NpmPmtilesReadsTheArchiveAsTheFolderRunWroteIt) {
+  REQUIRE_WEB();
+  auto r = run_skylit("tiles " + crop_ + " -o " + dir_.file("t.pmtiles") + flags_, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  r = run_skylit("tiles " + crop_ + " -o " + dir_.file("xyz") + flags_, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  int status = 0;
+  const std::string text = capture("node " + kWeb + "/read_pmtiles.mjs " + dir_.file("t.pmtiles"), status);
+  ASSERT_EQ(status, 0) << text;
+  const nlohmann::json j = nlohmann::json::parse(text);
+  EXPECT_EQ(j["header"]["specVersion"], 3);
+  EXPECT_EQ(j["header"]["tileType"], 2);  // PNG
+  EXPECT_EQ(j["header"]["clustered"], true);
+  EXPECT_EQ(j["header"]["minZoom"], 10);
+  EXPECT_EQ(j["header"]["maxZoom"], 12);
+  EXPECT_EQ(j["metadata"]["format"], "png");
+  std::map<std::string, std::string> from_reader;
+  for (const auto& [key, hash] : j["tiles"].items()) from_reader[key] = hash;
+  const auto from_folder = folder_hashes(dir_.file("xyz"));
+  EXPECT_GE(from_folder.size(), 10u);
+  EXPECT_EQ(from_reader, from_folder);
+}
+
+TEST_F(TilesWeb, LeafletPageShowsTheTilesInChromium) {
+  REQUIRE_WEB();
+  for (const std::string out : {"t.pmtiles", "xyz"}) {
+    const auto r = run_skylit("tiles " + crop_ + " -o " + dir_.file(out) + flags_ + " -w leaflet", true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::string root = out == "xyz" ? dir_.file("xyz") : dir_.path().string();
+    ASSERT_TRUE(fs::exists(root + "/index.html")) << out;
+    int status = 0;
+    const std::string shot = dir_.file(out + ".png");
+    const std::string text = capture("node " + kWeb + "/viewer_test.mjs " + root + " index.html " + shot, status);
+    EXPECT_EQ(status, 0) << out << ": " << text;
+    ASSERT_FALSE(text.empty()) << out;
+    const nlohmann::json j = nlohmann::json::parse(text);
+    EXPECT_GE(j["tiles"].get<int>(), 4) << out;  // the crop spans six z12 tiles in a 768 × 512 view
+    EXPECT_EQ(j["zoom"], 12) << out;             // opened at the deepest zoom, tiles at their own scale
+    EXPECT_GT(j["compared"].get<int>(), 30000) << out;
+    EXPECT_EQ(j["mismatched"], 0) << out;
+    if (out == "t.pmtiles") {
+      EXPECT_GT(j["range_requests"].get<int>(), 1);  // the reader reads by ranges
+    }
+    EXPECT_TRUE(fs::exists(shot));
+  }
+}
+
+TEST_F(TilesWeb, LeafletWithMbtilesFailsCleanly) {
+  const auto before = dir_.listing();
+  const auto r = run_skylit("tiles " + crop_ + " -o " + dir_.file("t.mbtiles") + flags_ + " -w leaflet", true);
+  EXPECT_EQ(r.status == 1 || r.status == 2, true) << r.out;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("cannot read MBTiles"), std::string::npos) << r.out;
+  EXPECT_EQ(dir_.listing(), before);
+}
+
+}  // namespace
+}  // namespace skylit::testing

@@ -1,0 +1,339 @@
+// Per-zoom height windows (terrain/tile_window.h): against the gdalwarp program run on
+// the DEM file itself, seamless halos between neighbouring windows, ground spacing
+// against PROJ's latitudes, and the outside/no-CRS policies.
+#include <gtest/gtest.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "terrain/dem_reader.h"
+#include "terrain/tile_window.h"
+#include "terrain_test_util.h"
+
+namespace skylit::terrain {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::ScratchDir;
+
+constexpr double kHalfWorld = 20037508.342789244;  // WebMercatorQuad, independent of our constant
+
+std::string dem_path(const char* name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }
+
+#define REQUIRE_FILE(path)                                                      \
+  do {                                                                          \
+    if (!fs::exists(path)) {                                                    \
+      if (std::getenv("CI")) FAIL() << (path) << " is missing (CI is set)";     \
+      GTEST_SKIP() << (path) << " is missing";                                  \
+    }                                                                           \
+  } while (0)
+
+#define REQUIRE_GDALWARP()                                                              \
+  do {                                                                                  \
+    if (std::system("gdalwarp --version > /dev/null 2>&1") != 0) {                      \
+      if (std::getenv("CI")) FAIL() << "gdalwarp is not on PATH (CI is set)";           \
+      GTEST_SKIP() << "gdalwarp is not on PATH";                                        \
+    }                                                                                   \
+  } while (0)
+
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+struct Raster {
+  int width = 0, height = 0;
+  std::array<double, 6> gt{};
+  std::vector<float> values;
+};
+
+// gdalwarp over tiles [x0..x1] × [y0..y1] of zoom z with a halo, the extent derived
+// here from the published half width; `args` are the resampling/warper options.
+Raster gdalwarp_window(const std::string& dem, int z, int x0, int y0, int x1, int y1, int halo,
+                       const std::vector<std::string>& args, const ScratchDir& dir) {
+  const double pix = 2 * kHalfWorld / (256.0 * std::pow(2.0, z));
+  const double xmin = -kHalfWorld + (x0 * 256.0 - halo) * pix, xmax = -kHalfWorld + ((x1 + 1) * 256.0 + halo) * pix;
+  const double ymax = kHalfWorld - (y0 * 256.0 - halo) * pix, ymin = kHalfWorld - ((y1 + 1) * 256.0 + halo) * pix;
+  const int w = (x1 - x0 + 1) * 256 + 2 * halo, h = (y1 - y0 + 1) * 256 + 2 * halo;
+  const std::string out = dir.file("gdalwarp_" + std::to_string(z) + "_" + std::to_string(x0) + ".tif");
+  std::string cmd = "gdalwarp -q -overwrite -te " + exact(xmin) + " " + exact(ymin) + " " + exact(xmax) + " " +
+                    exact(ymax) + " -ts " + std::to_string(w) + " " + std::to_string(h);
+  for (const auto& a : args) cmd += " '" + a + "'";
+  cmd += " '" + dem + "' '" + out + "'";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  GDALAllRegister();
+  Raster r;
+  const auto close = [](GDALDataset* d) { GDALClose(GDALDataset::ToHandle(d)); };
+  std::unique_ptr<GDALDataset, decltype(close)> ds(GDALDataset::Open(out.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY),
+                                                   close);
+  if (!ds) {
+    ADD_FAILURE() << "cannot open " << out;
+    return r;
+  }
+  r.width = ds->GetRasterXSize();
+  r.height = ds->GetRasterYSize();
+  ds->GetGeoTransform(r.gt.data());
+  r.values.resize(static_cast<std::size_t>(r.width) * r.height);
+  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.width, r.height, r.values.data(), r.width, r.height,
+                                           GDT_Float32, 0, 0, nullptr),
+            CE_None);
+  return r;
+}
+
+// The window against gdalwarp: same valid pixels, same heights to float rounding.
+void expect_matches(const TileWindow& win, const Raster& ref) {
+  ASSERT_EQ(win.field.width, ref.width);
+  ASSERT_EQ(win.field.height, ref.height);
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(win.field.georef.geotransform[k], ref.gt[k], 1e-6) << "gt " << k;
+  std::size_t mask_diff = 0, valid = 0;
+  double worst = 0;
+  for (std::size_t k = 0; k < ref.values.size(); ++k) {
+    const bool ref_valid = !std::isnan(ref.values[k]);
+    if (ref_valid != (win.field.valid[k] != 0)) ++mask_diff;
+    if (ref_valid && win.field.valid[k]) {
+      ++valid;
+      worst = std::max(worst, std::abs(double(ref.values[k]) - win.field.heights[k]) /
+                                  std::max(1.0, std::abs(double(ref.values[k]))));
+    }
+  }
+  EXPECT_EQ(mask_diff, 0u);
+  EXPECT_GT(valid, 0u);
+  EXPECT_LE(worst, 4e-7) << "largest relative difference from gdalwarp";  // a few float ulps
+}
+
+TEST(TileWindow, MatchesGdalwarpCubicAtNativeZoom) {
+  const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
+  REQUIRE_FILE(path);
+  REQUIRE_GDALWARP();
+  const TileWindowSource source(read_dem(path).field);
+  ASSERT_EQ(source.native_zoom(), 13);
+  // Two tiles around the DEM's centre (13/1407/3263, see terrain_tile_grid_test), halo 16.
+  const TileRange tiles{13, 1407, 3263, 1408, 3263};
+  const TileWindowOptions opt{.tile_size = 256, .halo = 16};
+  const TileWindow win = source.window(tiles, opt);
+  EXPECT_EQ(win.resampling, Resampling::Cubic);  // z ≥ native
+  const WarpSettings ws = source.warp_settings(13, opt);
+  EXPECT_EQ(ws.xscale, 1.0);  // upsampling: 15.8 m pixels from 30 m ones
+  ScratchDir dir;
+  expect_matches(win, gdalwarp_window(path, 13, 1407, 3263, 1408, 3263, 16, ws.arguments(), dir));
+  // The arguments are the documented ones.
+  const std::vector<std::string> expect_head{"-t_srs", "EPSG:3857", "-r", "cubic", "-et", "0", "-ot", "Float32",
+                                             "-dstnodata", "nan"};
+  const std::vector<std::string> args = ws.arguments();
+  EXPECT_EQ(std::vector<std::string>(args.begin(), args.begin() + 10), expect_head);
+}
+
+TEST(TileWindow, MatchesGdalwarpAverageBelowNativeZoom) {
+  const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
+  REQUIRE_FILE(path);
+  REQUIRE_GDALWARP();
+  const TileWindowSource source(read_dem(path).field);
+  // z 10: every tile touching the DEM (x 175…176, y 407…408 from its lon/lat corners).
+  const TileRange tiles = tiles_covering(LonLatBox{-118.3457, 34.2314, -117.9531, 34.4090}, 10);
+  ASSERT_FALSE(tiles.empty());
+  const TileWindowOptions opt{.halo = 8};
+  const TileWindow win = source.window(tiles, opt);
+  EXPECT_EQ(win.resampling, Resampling::Average);
+  const WarpSettings ws = source.warp_settings(10, opt);
+  // Ground pixel at z 10, 34.3203°N: 156543.034 / 1024 · cos φ = 126.26 m; 30 / 126.26 = 0.2376.
+  EXPECT_NEAR(ws.xscale, 0.2376, 2e-4);
+  EXPECT_NEAR(ws.yscale, 0.2376, 2e-4);
+  ScratchDir dir;
+  expect_matches(win, gdalwarp_window(path, 10, tiles.x0, tiles.y0, tiles.x1, tiles.y1, 8, ws.arguments(), dir));
+  EXPECT_FALSE(win.empty());
+  EXPECT_LT(win.valid_count, win.field.size());  // the DEM does not fill its tiles
+}
+
+TEST(TileWindow, MatchesGdalwarpOnAGeographicDemWithVoids) {
+  // Luxembourg: EPSG:4326, 30″ pixels, 46 % nodata outside the border.
+  const std::string path = dem_path("luxembourg_elev_4326.tif");
+  REQUIRE_FILE(path);
+  REQUIRE_GDALWARP();
+  const DemReadResult dem = read_dem(path);
+  const TileWindowSource source(dem.field);
+  // Ground resolution min(927 m, 598 m) = 598 m at 49.8°N; z 8: 156543/256 · cos φ = 395 m → native 8.
+  ASSERT_EQ(source.native_zoom(), 8);
+  const TileRange tiles = tiles_covering(LonLatBox{5.74, 49.45, 6.53, 50.19}, 8);
+  const TileWindowOptions opt{.halo = 4};
+  const TileWindow win = source.window(tiles, opt);
+  ScratchDir dir;
+  expect_matches(win, gdalwarp_window(path, 8, tiles.x0, tiles.y0, tiles.x1, tiles.y1, 4,
+                                      source.warp_settings(8, opt).arguments(), dir));
+  // Voids are filled (finite) but marked.
+  for (std::size_t k = 0; k < win.field.size(); ++k) ASSERT_TRUE(std::isfinite(win.field.heights[k]));
+  EXPECT_EQ(win.field.nodata, dem.field.nodata);
+}
+
+// Every global pixel held by both windows: same validity, same height to float
+// rounding (the windows' origins differ, so pixel centres can differ in the last bit
+// and a height by an ulp or two; 1e-6 relative is 16 ulps, 0.8 mm at 800 m).
+void expect_seamless(const TileWindow& a, const TileWindow& b, bool shares_data = true) {
+  ASSERT_EQ(a.tiles.z, b.tiles.z);
+  const long long T = a.tile_size;
+  const long long ax0 = a.tiles.x0 * T - a.halo, ay0 = a.tiles.y0 * T - a.halo;
+  const long long bx0 = b.tiles.x0 * T - b.halo, by0 = b.tiles.y0 * T - b.halo;
+  std::size_t shared = 0, valid = 0, differ = 0;
+  for (int j = 0; j < a.field.height; ++j)
+    for (int i = 0; i < a.field.width; ++i) {
+      const long long bi = ax0 + i - bx0, bj = ay0 + j - by0;
+      if (bi < 0 || bj < 0 || bi >= b.field.width || bj >= b.field.height) continue;
+      ++shared;
+      const bool va = a.field.is_valid(i, j), vb = b.field.is_valid(int(bi), int(bj));
+      const float ha = a.field.at(i, j), hb = b.field.at(int(bi), int(bj));
+      if (va != vb || (va && std::abs(ha - hb) > 1e-6f * std::abs(ha))) {
+        if (differ == 0)
+          ADD_FAILURE() << "first difference at window pixel (" << i << ", " << j << "): valid " << va << " vs "
+                        << vb << ", " << a.field.at(i, j) << " vs " << b.field.at(int(bi), int(bj));
+        ++differ;
+      }
+      valid += va;
+    }
+  EXPECT_GT(shared, 0u);
+  if (shares_data) {
+    EXPECT_GT(valid, 0u);
+  }
+  EXPECT_EQ(differ, 0u) << "of " << shared << " shared pixels";
+}
+
+TEST(TileWindow, HalosEqualTheNeighboursPixels) {
+  const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
+  REQUIRE_FILE(path);
+  const TileWindowSource source(read_dem(path).field);
+  struct Case {
+    int z, x, y;
+    std::optional<Resampling> r;
+  };
+  // Native zoom (cubic), below it (average), and cubic below it: downsampling, where
+  // GDAL's per-chunk kernel scale would differ between windows.
+  for (const Case c : {Case{13, 1407, 3263, std::nullopt}, Case{11, 351, 815, std::nullopt},
+                       Case{11, 351, 815, Resampling::Cubic}, Case{11, 351, 815, Resampling::Lanczos}}) {
+    SCOPED_TRACE("z " + std::to_string(c.z) + " " + (c.r ? std::string(resampling_name(*c.r)) : "default"));
+    const TileWindowOptions opt{.halo = 24, .resampling = c.r};
+    const TileWindow centre = source.window({c.z, c.x, c.y, c.x, c.y}, opt);
+    // The DEM spans tiles x−1…x+1 at both zooms; at z 11 it lies in row y alone.
+    expect_seamless(centre, source.window({c.z, c.x + 1, c.y, c.x + 1, c.y}, opt));  // east
+    expect_seamless(centre, source.window({c.z, c.x - 1, c.y, c.x - 1, c.y}, opt));  // west
+    expect_seamless(centre, source.window({c.z, c.x, c.y + 1, c.x, c.y + 1}, opt), c.z == 13);  // south
+    expect_seamless(centre, source.window({c.z, c.x - 1, c.y - 1, c.x - 1, c.y - 1}, opt), false);  // north-west
+    // A 2×2-tile window without halo holds the centre tile and its halo's east/south part.
+    expect_seamless(centre, source.window({c.z, c.x, c.y, c.x + 1, c.y + 1}, {.halo = 0, .resampling = c.r}));
+  }
+}
+
+TEST(TileWindow, GroundSpacingFollowsCosLatitude) {
+  const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
+  REQUIRE_FILE(path);
+  const TileWindowSource source(read_dem(path).field);
+  const TileWindow win = source.window({10, 175, 407, 176, 408}, {.halo = 64});
+  const HeightField& f = win.field;
+  ASSERT_EQ(f.height, 2 * 256 + 128);
+  OGRSpatialReference merc, geo;
+  merc.importFromEPSG(3857);
+  geo.importFromEPSG(4326);
+  merc.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  geo.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const std::unique_ptr<OGRCoordinateTransformation> inv(OGRCreateCoordinateTransformation(&merc, &geo));
+  const double pix = 2 * kHalfWorld / (256.0 * 1024);
+  double sum = 0;
+  for (int j = 0; j < f.height; ++j) {
+    double x = f.georef.geotransform[0], y = f.georef.geotransform[3] - (j + 0.5) * pix;
+    ASSERT_TRUE(inv->Transform(1, &x, &y));
+    const double expect = pix * std::cos(y * M_PI / 180);  // PROJ's latitude of the row centre
+    EXPECT_NEAR(f.dx(j), expect, 1e-9 * expect) << "row " << j;
+    EXPECT_EQ(win.dy_per_row[j], f.dx(j));
+    sum += win.dy_per_row[j];
+  }
+  EXPECT_GT(f.dx(0), 0);
+  EXPECT_LT(f.dx(0), f.dx(f.height - 1));  // pixels shrink northward on the ground
+  EXPECT_NEAR(f.dy, sum / f.height, 1e-6 * f.dy);
+  // max_dy_error ≈ sin φ · (rows / 2) · (2π / (256 · 2^z)) at the window's edge rows.
+  const double phi = 34.32 * M_PI / 180;
+  EXPECT_NEAR(win.max_dy_error(), std::sin(phi) * f.height * M_PI / (256.0 * 1024), 0.05 * win.max_dy_error());
+  // Slopes see ground metres: shading must not use metric_spacing's 3857 metres.
+  EXPECT_LT(f.mean_dx(), 0.9 * pix);
+}
+
+TEST(TileWindow, OutsideTheDemIsMarkedNotAnError) {
+  const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
+  REQUIRE_FILE(path);
+  const TileWindowSource source(read_dem(path).field);
+  // Far away (the Atlantic at z 13): empty, all invalid, heights 0.
+  const TileWindow far = source.window({13, 3000, 3000, 3000, 3000}, {.halo = 2});
+  EXPECT_TRUE(far.empty());
+  EXPECT_EQ(far.field.width, 260);
+  for (std::size_t k = 0; k < far.field.size(); ++k) {
+    ASSERT_EQ(far.field.valid[k], 0);
+    ASSERT_EQ(far.field.heights[k], 0.0f);
+  }
+  // A halo past the world's corner (west of −180°, north of 85.05°) is just more outside.
+  const TileWindow corner = source.window({3, 0, 0, 0, 0}, {.halo = 8});
+  EXPECT_TRUE(corner.empty());
+  EXPECT_EQ(corner.field.height, 272);
+  // The DEM's west edge (118.3457°W at the top, 118.3430°W at the bottom) crosses global
+  // pixel column (180 − 118.345)/360 · 8192 · 256 ≈ 1403 · 256 ± 12 at z 13: with a 64-px
+  // halo the window over tile 1403 is invalid on the west, valid on the east, every
+  // height finite (filled).
+  const TileWindow edge = source.window({13, 1403, 3263, 1403, 3263}, {.halo = 64});
+  EXPECT_FALSE(edge.empty());
+  EXPECT_LT(edge.valid_count, edge.field.size());
+  EXPECT_FALSE(edge.field.is_valid(0, 192));
+  EXPECT_FALSE(edge.field.is_valid(40, 192));
+  EXPECT_TRUE(edge.field.is_valid(64 + 40, 192));
+  for (std::size_t k = 0; k < edge.field.size(); ++k) ASSERT_TRUE(std::isfinite(edge.field.heights[k]));
+  EXPECT_TRUE(edge.field.nodata.has_value());
+}
+
+TEST(TileWindow, ErrorsAreOneLine) {
+  HeightField f(16, 16, 30.0);
+  try {
+    TileWindowSource s(f);  // no CRS
+    FAIL() << "no exception";
+  } catch (const DemError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("no CRS"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+  }
+  OGRSpatialReference utm;
+  utm.importFromEPSG(32611);
+  char* wkt = nullptr;
+  utm.exportToWkt(&wkt);
+  f.georef.crs_wkt = wkt;
+  CPLFree(wkt);
+  f.georef.geotransform = {394000, 30, 0, 3798000, 0, -30};
+  const TileWindowSource s(f);
+  EXPECT_THROW(s.window({13, 1407, 3263, 1406, 3263}), std::invalid_argument);  // empty range
+  EXPECT_THROW(s.window({2, 0, 0, 4, 0}), std::invalid_argument);               // beyond zoom 2
+  EXPECT_THROW(s.window({13, 1407, 3263, 1407, 3263}, {.halo = -1}), std::invalid_argument);
+  EXPECT_THROW(s.window({13, 1407, 3263, 1407, 3263}, {.tile_size = 300}), std::invalid_argument);
+  EXPECT_THROW(s.window({31, 0, 0, 0, 0}), std::invalid_argument);
+}
+
+TEST(TileWindow, TileRectsAndResamplingNames) {
+  TileWindow w;
+  w.tiles = {5, 10, 20, 11, 21};
+  w.tile_size = 256;
+  w.halo = 8;
+  EXPECT_EQ(w.tile_rect({5, 10, 20}), (PixelRect{8, 8, 256, 256}));
+  EXPECT_EQ(w.tile_rect({5, 11, 21}), (PixelRect{264, 264, 256, 256}));
+  EXPECT_THROW(w.tile_rect({5, 12, 20}), std::out_of_range);
+  EXPECT_THROW(w.tile_rect({6, 10, 20}), std::out_of_range);
+  for (auto r : {Resampling::Nearest, Resampling::Bilinear, Resampling::Cubic, Resampling::CubicSpline,
+                 Resampling::Lanczos, Resampling::Average})
+    EXPECT_EQ(parse_resampling(resampling_name(r)), r);
+  EXPECT_EQ(resampling_name(Resampling::Nearest), "near");
+  EXPECT_FALSE(parse_resampling("bicubic").has_value());
+  EXPECT_EQ(default_resampling(13, 13), Resampling::Cubic);
+  EXPECT_EQ(default_resampling(14, 13), Resampling::Cubic);
+  EXPECT_EQ(default_resampling(12, 13), Resampling::Average);
+}
+
+}  // namespace
+}  // namespace skylit::terrain

@@ -47,6 +47,10 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     wo.tile_size = job.tile_size;
     wo.halo = job.product ? plan.halo : 0;  // DEM encodings read no neighbours
     wo.resampling = job.resampling;
+    // Outside the DEM (transparent in the tiles) only the heights next to its edge matter,
+    // as near blockers: the nearest valid height, O(N), where the smooth Laplace fill took
+    // 60 % of a hillshade run's time on its wide outside halos.
+    wo.fill = terrain::VoidFill::Nearest;
     const terrain::TileWindow window = source.window(b.tiles, wo);
     if (window.empty()) {
       n.empty += static_cast<long long>(todo.size());

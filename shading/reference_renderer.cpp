@@ -407,7 +407,8 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
           }
           break;
         }
-        case Product::Shadow: break;  // returned above
+        case Product::Shadow: break;     // returned above
+        case Product::Hillshade: break;  // local: compute_local_product, before the horizons
       }
     }
   }, [&](double f) { main_progress(coarse_share + sweep_share + (1.0 - coarse_share - sweep_share) * f); });

@@ -290,6 +290,52 @@ TEST_F(Tiles, DISABLED_DefaultDistanceAgainstFourTimesIt) {
   EXPECT_LE(d.rms, 4.0);
 }
 
+// --format webp decodes (GDAL's WEBP driver: libwebp) to the PNG run's RGBA exactly;
+// --format jpeg to its grey within JPEG's loss, with transparent pixels white and no
+// alpha; DEM encodings refuse jpeg. The folder's extension and the metadata follow.
+TEST_F(Tiles, WebpIsLosslessAndJpegOpaque) {
+  const fs::path png = dir_->file("fmt_png"), webp = dir_->file("fmt_webp"), jpeg = dir_->file("fmt_jpeg");
+  tiles("-p hillshade --zoom 11-13 -o " + png.string());
+  tiles("-p hillshade --zoom 11-13 --format webp -o " + webp.string());
+  tiles("-p hillshade --zoom 11-13 --format jpeg -o " + jpeg.string());
+  const std::set<Tile> set = folder_tiles(png);
+  ASSERT_GE(set.size(), 4u);
+  long transparent = 0, dark = 0, compared = 0;
+  double sum = 0;
+  for (const Tile& t : set) {
+    const std::string stem = std::to_string(t.z) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y);
+    const auto a = read_rgba(png / (stem + ".png")), b = read_rgba(webp / (stem + ".webp"));
+    ASSERT_FALSE(a.empty() || b.empty()) << stem;
+    EXPECT_EQ(a, b) << stem << ": webp is not the png's pixels (RGB under alpha 0 included: exact mode)";
+    GDALDataset* ds = GDALDataset::Open((jpeg / (stem + ".jpg")).c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+    ASSERT_NE(ds, nullptr) << stem;
+    EXPECT_EQ(ds->GetRasterCount(), 3) << stem;
+    std::vector<std::uint8_t> grey(256 * 256);
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 256, 256, grey.data(), 256, 256, GDT_Byte, 0, 0, nullptr),
+              CE_None);
+    GDALClose(GDALDataset::ToHandle(ds));
+    for (std::size_t k = 0; k < grey.size(); ++k) {
+      if (a[4 * k + 3] == 0) {
+        ++transparent;
+        dark += grey[k] < 230;  // white, but for JPEG's ringing along the DEM's edge
+        continue;
+      }
+      const double e = double(grey[k]) - a[4 * k];
+      sum += e * e, ++compared;
+    }
+  }
+  EXPECT_GT(transparent, 0);  // the crop's edge tiles reach outside it
+  EXPECT_LT(dark, transparent / 100) << "outside the DEM is white in jpeg";
+  const double rms = std::sqrt(sum / compared);
+  std::printf("jpeg against png: grey RMS %.2f codes over %ld pixels\n", rms, compared);
+  EXPECT_LT(rms, 4.0);
+  EXPECT_NE(capture("cat " + (webp / "metadata.json").string()).find("\"webp\""), std::string::npos);
+  const auto r = run_skylit("tiles " + dem() + " -p terrain-rgb --format jpeg -q -o " + dir_->file("rgb_jpeg"), true);
+  EXPECT_EQ(r.status == 1 || r.status == 2, true) << r.out;
+  EXPECT_NE(r.out.find("lossless"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir_->file("rgb_jpeg")));
+}
+
 TEST_F(Tiles, TwoShardsMergedEqualTheSingleRun) {
   ScratchDir out;
   tiles("-o " + out.file("all.pmtiles") + " " + kHillshade);
@@ -429,7 +475,7 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
       {dem() + " -o " + out.file("t.pmtiles") + " --shard a/b", "--shard 'a/b'"},
       {nocrs + " -o " + out.file("t.pmtiles"), "no CRS"},
       {dem() + " -o " + out.file("t.pmtiles") + " --zoom 10 --shard 2/2", "nothing to render"},
-      {dem() + " -o " + out.file("t.pmtiles") + " --format webp", "png tiles only"},
+      {dem() + " -o " + out.file("t.pmtiles") + " --format gif", "png, webp or jpeg"},
       {dem() + " -o " + out.file("t.mbtiles") + " --tms", "--tms"},
       {dem() + " -o " + out.file("t.pmtiles") + " -p horizon", "unknown -p"},
   };

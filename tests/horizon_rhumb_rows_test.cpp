@@ -42,7 +42,9 @@ TEST(RhumbRows, GammaIsTheIntegralOfTheInverseSpacing) {
       // Simpson's error on a kink-free segment is far below 1e-9 with 20000 panels; the
       // kinks at whole rows cost O(h²) of one panel.
       EXPECT_NEAR(rows.gamma(y), simpson_gamma(f, y), 1e-7 * (1.0 + y)) << lat0 << " y " << y;
-      if (y == std::floor(y)) EXPECT_EQ(rows.gamma(y), rows.half_rows()[static_cast<std::size_t>(2 * y)]);
+      if (y == std::floor(y)) {
+        EXPECT_EQ(rows.gamma(y), rows.half_rows()[static_cast<std::size_t>(2 * y)]);
+      }
     }
     EXPECT_EQ(rows.half_rows().size(), 81u);
     EXPECT_EQ(rows.last(), rows.gamma(40.0));

@@ -56,8 +56,9 @@ TEST(GdalHillshade, TiltedPlanesMatchTheClosedForm) {
     const auto e = gdal_hillshade(f, o);
     for (int j = 0; j < f.height; ++j)
       for (int i = 0; i < f.width; ++i)
-        if ((i != 0 && i != f.width - 1) || (j != 0 && j != f.height - 1))
+        if ((i != 0 && i != f.width - 1) || (j != 0 && j != f.height - 1)) {
           EXPECT_NEAR(e[static_cast<std::size_t>(j) * f.width + i], want, 2e-3) << "edge " << i << "," << j;
+        }
   }
 }
 

@@ -61,7 +61,7 @@ ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileM
   v.url = kind == st::ArchiveKind::PMTiles ? out.filename().string() : ".";
   folder = kind == st::ArchiveKind::PMTiles ? (out.has_parent_path() ? out.parent_path().string() : ".") : a.output;
   v.tms = a.tms;
-  v.format = "png";
+  v.format = std::string(st::format_name(meta.format));
   v.tile_size = a.tile_size;
   v.minzoom = meta.minzoom;
   v.maxzoom = meta.maxzoom;
@@ -122,13 +122,19 @@ int run_tiles(const TilesArgs& a) {
     throw std::invalid_argument("--tms orders a folder's rows; MBTiles rows are TMS and PMTiles XYZ by their specs");
   if (a.webviewer == "leaflet" && kind == st::ArchiveKind::MBTiles)
     throw std::invalid_argument("-w leaflet: a web page cannot read MBTiles; write a .pmtiles file or a folder");
-  if (a.format != "png")
-    throw std::invalid_argument("--format " + a.format + ": this build writes png tiles only");
+  if (a.format != "png" && a.format != "webp" && a.format != "jpeg" && a.format != "jpg")
+    throw std::invalid_argument("--format " + a.format + ": png, webp or jpeg");
+  const st::TileFormat format = st::parse_format(a.format);
+  if (format == st::TileFormat::Jpeg && (a.product == "terrain-rgb" || a.product == "terrarium"))
+    throw std::invalid_argument("-p " + a.product + " encodes heights in the colours: it needs a lossless format "
+                                "(--format png or webp), not jpeg");
   st::ArchiveOptions archive_options;
+  archive_options.format = format;
   archive_options.mode = open_mode(a);
   archive_options.scheme = a.tms ? st::Scheme::Tms : st::Scheme::Xyz;
   const Shard shard = parse_shard(a.shard);
   TileJob job;
+  job.format = format;
   job.tile_size = a.tile_size;
   job.quiet = a.quiet;
   choose_product(a, job);
@@ -192,7 +198,7 @@ int run_tiles(const TilesArgs& a) {
 
   st::TileMetadata meta;
   meta.name = a.name.empty() ? std::filesystem::path(a.inputs.front()).stem().string() + " " + a.product : a.name;
-  meta.format = st::TileFormat::Png;
+  meta.format = format;
   const auto e7 = st::at_e7_precision;
   meta.bounds = {e7(ll.west), e7(ll.south), e7(ll.east), e7(ll.north)};
   meta.center = {e7(0.5 * (ll.west + ll.east)), e7(0.5 * (ll.south + ll.north)), zooms.min};
@@ -237,7 +243,10 @@ void add_tiles_command(CLI::App& root, Action& run) {
   cmd->add_option("-r,--resampling", a->resampling,
                   "DEM resampling onto each zoom: near | bilinear | cubic | cubicspline | lanczos | average "
                   "(default: cubic at and above the native zoom, average below)");
-  cmd->add_option("--format", a->format, "Tile image format (png)")->capture_default_str();
+  cmd->add_option("--format", a->format,
+                  "Tile image format: png | webp (lossless, with alpha) | jpeg (quality 90, no alpha: outside the "
+                  "DEM white; for opaque base maps)")
+      ->capture_default_str();
   auto* tms = cmd->add_flag("--tms", a->tms, "Folder rows in TMS order (y from the south) instead of XYZ");
   cmd->add_flag("--xyz", a->xyz, "Folder rows in XYZ order (y from the north): the default, as gdal2tiles --xyz")->excludes(tms);
   cmd->add_option("--halo", a->halo, "Window halo in pixels (default: from --max-distance, docs/tiles.md)");

@@ -47,29 +47,44 @@ bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect
   return false;
 }
 
-std::string encode_png(int size, const std::vector<std::uint8_t>& rgba) {
+std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba) {
+  using skylit::tiles::TileFormat;
   GDALAllRegister();
+  const char* driver_name = format == TileFormat::Png ? "PNG" : format == TileFormat::Webp ? "WEBP" : "JPEG";
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
-  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
-  if (!mem || !png) throw std::runtime_error("GDAL lacks its MEM or PNG driver");
-  std::unique_ptr<GDALDataset> src(mem->Create("", size, size, 4, GDT_Byte, nullptr));
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
+  if (!mem || !driver) throw std::runtime_error(std::string("GDAL lacks its MEM or ") + driver_name + " driver");
+  const bool alpha = format != TileFormat::Jpeg;
+  std::vector<std::uint8_t> pixels = rgba;
+  if (!alpha)  // JPEG: composite over the background, RGB only
+    for (std::size_t k = 0; k < pixels.size(); k += 4)
+      if (pixels[k + 3] == 0) std::fill(&pixels[k], &pixels[k + 3], kJpegBackground);
+  const int bands = alpha ? 4 : 3;
+  std::unique_ptr<GDALDataset> src(mem->Create("", size, size, bands, GDT_Byte, nullptr));
   if (!src) throw std::runtime_error("cannot create an in-memory tile");
-  // Pixel-interleaved RGBA rows into four bands.
-  if (src->RasterIO(GF_Write, 0, 0, size, size, const_cast<std::uint8_t*>(rgba.data()), size, size, GDT_Byte, 4,
-                    nullptr, 4, 4 * size, 1) != CE_None)
+  // Pixel-interleaved RGBA rows into the bands (the first three for JPEG).
+  if (src->RasterIO(GF_Write, 0, 0, size, size, pixels.data(), size, size, GDT_Byte, bands, nullptr, 4, 4 * size, 1) !=
+      CE_None)
     throw std::runtime_error("cannot fill an in-memory tile");
-  src->GetRasterBand(4)->SetColorInterpretation(GCI_AlphaBand);
+  if (alpha) src->GetRasterBand(4)->SetColorInterpretation(GCI_AlphaBand);
   // A unique /vsimem/ name per thread; no .aux.xml beside it (GDAL_PAM_ENABLED off).
-  const std::string name = "/vsimem/skylit_tile_" + std::to_string(reinterpret_cast<std::uintptr_t>(&size)) + ".png";
+  const std::string name = "/vsimem/skylit_tile_" + std::to_string(reinterpret_cast<std::uintptr_t>(&size)) + "." +
+                           std::string(skylit::tiles::format_name(format));
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
-  const char* options[] = {"WORLDFILE=NO", nullptr};
-  std::unique_ptr<GDALDataset> out(png->CreateCopy(name.c_str(), src.get(), FALSE, const_cast<char**>(options),
-                                                   nullptr, nullptr));
-  if (!out) throw std::runtime_error("cannot encode a PNG tile: " + std::string(CPLGetLastErrorMsg()));
+  std::vector<const char*> options = {"WORLDFILE=NO"};
+  // Lossless, and EXACT: libwebp would otherwise recolour transparent pixels, where DEM
+  // encodings keep the filled height's code (terrain/dem_tile_encoding.h). QUALITY is
+  // the effort when lossless.
+  if (format == TileFormat::Webp) options = {"LOSSLESS=YES", "EXACT=1", "QUALITY=100"};
+  if (format == TileFormat::Jpeg) options = {"WORLDFILE=NO", "QUALITY=90"};
+  options.push_back(nullptr);
+  std::unique_ptr<GDALDataset> out(driver->CreateCopy(name.c_str(), src.get(), FALSE, const_cast<char**>(options.data()),
+                                                      nullptr, nullptr));
+  if (!out) throw std::runtime_error("cannot encode a tile: " + std::string(CPLGetLastErrorMsg()));
   out.reset();
   vsi_l_offset length = 0;
   GByte* data = VSIGetMemFileBuffer(name.c_str(), &length, TRUE);
-  if (!data) throw std::runtime_error("cannot read back a PNG tile");
+  if (!data) throw std::runtime_error("cannot read back an encoded tile");
   std::string bytes(reinterpret_cast<const char*>(data), static_cast<std::size_t>(length));
   CPLFree(data);
   return bytes;

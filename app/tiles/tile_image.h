@@ -1,4 +1,4 @@
-// One tile's pixels as an RGBA image and its PNG bytes. Shaded products become grey (or
+// One tile's pixels as an RGBA image and its PNG, WebP or JPEG bytes. Shaded products become grey (or
 // the colour sky's RGB) with alpha 0 at nodata and outside the DEM; DEM encodings use
 // terrain/dem_tile_encoding.h.
 #pragma once
@@ -9,6 +9,7 @@
 
 #include "shading/products.h"
 #include "terrain/height_field.h"
+#include "tiles/metadata.h"
 
 namespace skylit::app::tiles {
 
@@ -29,7 +30,12 @@ std::vector<std::uint8_t> product_tile_rgba(shading::Product product, const shad
 // True when `rect` holds at least one valid pixel of `field` (tiles without one are not written).
 bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect);
 
-// PNG bytes of size × size RGBA pixels (deterministic: no time or software stamp).
-std::string encode_png(int size, const std::vector<std::uint8_t>& rgba);
+// The bytes of size × size RGBA pixels in `format` (deterministic: no time or software
+// stamp). PNG and WebP are lossless with alpha (WebP: libwebp's exact lossless mode, so a
+// tile decodes to the PNG's pixels, RGB under alpha 0 included); JPEG has no alpha: transparent pixels become white, the
+// rest is compressed at quality 90 (for opaque base maps).
+std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba);
+// Background of transparent pixels in JPEG tiles.
+inline constexpr std::uint8_t kJpegBackground = 255;
 
 }  // namespace skylit::app::tiles

@@ -75,7 +75,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
       std::vector<std::uint8_t> rgba(bytes);
       if (bands) rgba = product_tile_rgba(*job.product, *bands, window.field, rect);
       else terrain::encode_dem_tile(*job.encoding, window.field, rect, rgba);
-      archive.put(t, skylit::tiles::as_bytes(encode_png(job.tile_size, rgba)));
+      archive.put(t, skylit::tiles::as_bytes(encode_tile(job.format, job.tile_size, rgba)));
       ++n.written;
     }
     progress.update(done());

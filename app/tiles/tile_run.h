@@ -21,6 +21,7 @@ struct TileJob {
   std::optional<shading::Product> product;
   shading::ProductOptions options;  // max_distance_m is set per zoom from its plan
   std::optional<terrain::DemEncoding> encoding;
+  skylit::tiles::TileFormat format = skylit::tiles::TileFormat::Png;
   bool quiet = false;
 };
 

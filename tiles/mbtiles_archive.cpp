@@ -16,6 +16,7 @@
 
 #include "tiles/archive_kinds.h"
 #include "tiles/file_io.h"
+#include "tiles/partial_database.h"
 #include "tiles/sqlite_db.h"
 
 namespace skylit::tiles::detail {
@@ -55,43 +56,23 @@ std::vector<double> numbers(const std::string& csv) {
   return out;
 }
 
-void remove_database(const fs::path& db) {
-  remove_file(db);
-  remove_file(with_suffix(db, "-journal"));
-}
-
-// Prepares the partial database for the mode; returns its path.
-fs::path prepare_partial(const fs::path& out, OpenMode mode) {
-  const fs::path partial = with_suffix(out, kPartialSuffix);
-  const bool have_out = fs::exists(out), have_partial = fs::exists(partial);
-  switch (mode) {
-    case OpenMode::Create:
-      if (have_out) fail(out, "exists (overwrite it, or resume the run that wrote it)", "overwrite");
-      if (have_partial)
-        fail(out, "an interrupted run left '" + partial.string() + "' (resume or overwrite it)",
-             "resume");
-      break;
-    case OpenMode::Overwrite: remove_database(partial); break;
-    case OpenMode::Resume:
-      if (!have_partial && have_out) {
-        const fs::path copy = with_suffix(out, kAssemblySuffix);
-        std::error_code ec;
-        fs::copy_file(out, copy, fs::copy_options::overwrite_existing, ec);
-        if (!ec) fs::rename(copy, partial, ec);
-        if (ec) {
-          fs::remove(copy);
-          fail(out, "cannot copy it to resume it: " + ec.message());
-        }
-      }
-      break;
+// Resuming a finished archive: a copy becomes the partial database (copied beside it and
+// renamed, so OUT stays valid and no half copy is ever the partial).
+void copy_to_partial(const fs::path& out, const fs::path& partial) {
+  const fs::path copy = with_suffix(out, kAssemblySuffix);
+  std::error_code ec;
+  fs::copy_file(out, copy, fs::copy_options::overwrite_existing, ec);
+  if (!ec) fs::rename(copy, partial, ec);
+  if (ec) {
+    fs::remove(copy);
+    fail(out, "cannot copy it to resume it: " + ec.message());
   }
-  return partial;
 }
 
 class MBTilesArchive final : public TileArchive {
  public:
   MBTilesArchive(const fs::path& out, const ArchiveOptions& options)
-      : out_(out), options_(options), db_(prepare_partial(out, options.mode)),
+      : out_(out), options_(options), db_(prepare_partial(out, options.mode, copy_to_partial)),
         batch_(db_, options.batch_tiles) {
     db_.exec(kSchema);
     has_.emplace(db_, "SELECT 1 FROM tiles WHERE zoom_level = ? AND tile_column = ? AND tile_row = ?");

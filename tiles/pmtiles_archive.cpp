@@ -14,6 +14,7 @@
 
 #include "tiles/archive_kinds.h"
 #include "tiles/file_io.h"
+#include "tiles/partial_database.h"
 #include "tiles/pmtiles_format.h"
 #include "tiles/sqlite_db.h"
 
@@ -30,11 +31,6 @@ std::uint64_t fnv1a(std::string_view s) {  // content key for deduplication (byt
   std::uint64_t h = 14695981039346656037ull;
   for (char c : s) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
   return h;
-}
-
-void remove_database(const fs::path& db) {
-  remove_file(db);
-  remove_file(with_suffix(db, "-journal"));
 }
 
 // Resuming a finished archive: its tiles become the staging database, built beside it
@@ -59,28 +55,10 @@ void import_archive(const fs::path& out, const fs::path& staging) {
   if (ec) fail(staging, "cannot rename into place: " + ec.message());
 }
 
-fs::path prepare_staging(const fs::path& out, OpenMode mode) {
-  const fs::path staging = with_suffix(out, kPartialSuffix);
-  const bool have_out = fs::exists(out), have_staging = fs::exists(staging);
-  switch (mode) {
-    case OpenMode::Create:
-      if (have_out) fail(out, "exists (overwrite it, or resume the run that wrote it)", "overwrite");
-      if (have_staging)
-        fail(out, "an interrupted run left '" + staging.string() + "' (resume or overwrite it)",
-             "resume");
-      break;
-    case OpenMode::Overwrite: remove_database(staging); break;
-    case OpenMode::Resume:
-      if (!have_staging && have_out) import_archive(out, staging);
-      break;
-  }
-  return staging;
-}
-
 class PMTilesArchive final : public TileArchive {
  public:
   PMTilesArchive(const fs::path& out, const ArchiveOptions& options)
-      : out_(out), options_(options), db_(prepare_staging(out, options.mode)),
+      : out_(out), options_(options), db_(prepare_partial(out, options.mode, import_archive)),
         batch_(db_, options.batch_tiles) {
     db_.exec(kSchema);
     has_.emplace(db_, "SELECT 1 FROM staged WHERE tile_id = ?");

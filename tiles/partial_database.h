@@ -1,0 +1,23 @@
+// The resumable state of a file archive (MBTiles, PMTiles): an SQLite database
+// "OUT.partial" next to OUT until finish() (internal).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+#include "tiles/archive.h"
+
+namespace skylit::tiles::detail {
+
+// Removes an SQLite database file and its rollback journal, if present.
+void remove_database(const std::filesystem::path& db);
+
+// OUT's partial database path, prepared for `mode`: Create refuses an existing OUT or
+// partial (one line naming the mode that fixes it), Overwrite removes the partial,
+// Resume keeps it; resuming a finished OUT that has no partial, `import_finished(out,
+// partial)` makes one from it (each kind its own way).
+using ImportFinished = std::function<void(const std::filesystem::path& out, const std::filesystem::path& partial)>;
+std::filesystem::path prepare_partial(const std::filesystem::path& out, OpenMode mode,
+                                      const ImportFinished& import_finished);
+
+}  // namespace skylit::tiles::detail

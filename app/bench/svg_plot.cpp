@@ -1,5 +1,7 @@
 #include "app/bench/svg_plot.h"
 
+#include "app/common/xml_escape.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,20 +15,6 @@ namespace {
 // Panel geometry (px): plot area inside the margins.
 constexpr double kPanelW = 560, kPanelH = 380;
 constexpr double kLeft = 72, kRight = 24, kTop = 44, kBottom = 52;
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string fmt(double v, const char* format = "%.1f") {
   char buf[48];

@@ -1,5 +1,7 @@
 #include "app/flight/fit_svg.h"
 
+#include "app/common/xml_escape.h"
+
 #include "flight/fit_error.h"
 
 #include <glm/geometric.hpp>
@@ -15,12 +17,6 @@ using skylit::flight::BodySphere;
 using skylit::flight::Mesh;
 
 constexpr double kWidthPx = 900.0, kMarginPx = 24.0, kTitlePx = 28.0, kLabelPx = 18.0;
-
-std::string escaped(const std::string& s) {
-  std::string out;
-  for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return out;
-}
 
 // One view: screen axes are two body axes (right, up); `toward` is the body direction
 // toward the viewer, so only the triangles facing it are drawn (enough to fill a closed
@@ -68,7 +64,7 @@ std::string fit_svg(const Mesh& mesh, const std::vector<BodySphere>& spheres, co
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidthPx << "\" height=\"" << y0
       << "\" font-family=\"sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << kMarginPx
-      << "\" y=\"" << kMarginPx + 6 << "\" font-size=\"16\">" << escaped(title) << "</text>\n"
+      << "\" y=\"" << kMarginPx + 6 << "\" font-size=\"16\">" << xml_escape(title) << "</text>\n"
       << body.str() << "</svg>\n";
   return svg.str();
 }

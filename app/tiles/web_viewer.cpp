@@ -1,15 +1,13 @@
 #include "app/tiles/web_viewer.h"
 
+#include "app/common/text_file.h"
+#include "app/common/xml_escape.h"
 #include "app/tiles/web_assets.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 #include <string_view>
-#include <system_error>
-#include <unistd.h>
 
 namespace skylit::app::tiles {
 namespace {
@@ -30,21 +28,6 @@ std::string fill(std::string_view page, const std::initializer_list<std::pair<st
   return out.append(page.substr(at));
 }
 
-// Text safe inside an HTML <title>.
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string leaflet_page(const ViewerSpec& s) {
@@ -60,7 +43,7 @@ std::string leaflet_page(const ViewerSpec& s) {
   // "</" never appears in the JSON, so it cannot end the <script> it sits in.
   std::string json = spec.dump();
   for (std::size_t k = json.find("</"); k != std::string::npos; k = json.find("</", k)) json.replace(k, 2, "<\\/");
-  return fill(web_asset("viewer.html"), {{"@TITLE@", html_escape(s.title)},
+  return fill(web_asset("viewer.html"), {{"@TITLE@", xml_escape(s.title)},
                                          {"@LEAFLET_CSS@", std::string(web_asset("leaflet.css"))},
                                          {"@LEAFLET_JS@", std::string(web_asset("leaflet.js"))},
                                          {"@PMTILES_JS@", std::string(web_asset("pmtiles.js"))},
@@ -68,25 +51,7 @@ std::string leaflet_page(const ViewerSpec& s) {
 }
 
 void write_leaflet_viewer(const std::string& folder, const ViewerSpec& spec) {
-  namespace fs = std::filesystem;
-  const fs::path final_path = fs::path(folder) / "index.html";
-  const fs::path temp = fs::path(folder) / (".index.html.tmp-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << leaflet_page(spec);
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(temp, ec);
-      throw std::runtime_error("cannot write the web viewer " + final_path.string());
-    }
-  }
-  std::error_code ec;
-  fs::rename(temp, final_path, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw std::runtime_error("cannot write the web viewer " + final_path.string() + ": " + ec.message());
-  }
+  write_text_atomically((std::filesystem::path(folder) / "index.html").string(), leaflet_page(spec), "the web viewer");
 }
 
 }  // namespace skylit::app::tiles

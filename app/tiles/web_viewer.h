@@ -22,7 +22,7 @@ struct ViewerSpec {
 // The page's HTML.
 std::string leaflet_page(const ViewerSpec& spec);
 
-// Writes index.html into `folder` atomically (temporary + rename); throws
+// Writes index.html into `folder` atomically (app/common/text_file.h); throws
 // std::runtime_error with a one-line message when it cannot.
 void write_leaflet_viewer(const std::string& folder, const ViewerSpec& spec);
 

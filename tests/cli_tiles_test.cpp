@@ -154,11 +154,7 @@ class Tiles : public ::testing::Test {
     delete dir_;
     delete missing_;
   }
-  void SetUp() override {
-    if (missing_->empty()) return;
-    if (std::getenv("CI")) FAIL() << *missing_ << " (CI is set)";
-    GTEST_SKIP() << *missing_;
-  }
+  void SetUp() override { SKYLIT_REQUIRE(*missing_); }
   static std::string dem() { return dir_->file("dem.tif"); }
   // Runs `skylit tiles DEM ARGS -q`; fails the test on a non-zero exit.
   static void tiles(const std::string& args) {
@@ -377,10 +373,7 @@ TEST_F(Tiles, AShardWhollyOutsideTheDemWritesNothing) {
   // Luxembourg: 46 % of its grid lies outside the border, so at z 12 some of the 8 blocks
   // hold no valid pixel; with one block per shard those shards have nothing to write.
   const std::string lux = shared_dem("luxembourg_elev_4326.tif");
-  if (!fs::exists(lux)) {
-    if (std::getenv("CI")) FAIL() << lux << " is missing (CI is set)";
-    GTEST_SKIP() << lux << " is missing";
-  }
+  SKYLIT_REQUIRE(terrain::testing::missing_file(lux));
   ScratchDir out;
   const std::string args = " -p terrain-rgb --zoom 12 -q";
   int empty = 0, written = 0;

@@ -26,23 +26,16 @@ using terrain::testing::shared_dem;
 
 const std::string kWeb = std::string(SKYLIT_SOURCE_DIR) + "/tests/web";
 
-bool preconditions_met(std::string& why) {
-  if (std::system("command -v node >/dev/null 2>&1") != 0) why = "node not on PATH";
-  else if (!fs::exists("/usr/bin/chromium") && !std::getenv("CHROMIUM")) why = "no /usr/bin/chromium (or $CHROMIUM)";
-  else if (!fs::exists(kWeb + "/node_modules/puppeteer-core") || !fs::exists(kWeb + "/node_modules/pmtiles"))
-    why = "tests/web/node_modules missing: run npm ci --prefix tests/web";
-  else if (!fs::exists(shared_dem("big_tujunga_srtm30_utm11n.tif"))) why = "../shared/dem is absent";
-  return why.empty();
+// What the tests need and lack ("": nothing).
+std::string missing_web_tools() {
+  if (std::system("command -v node >/dev/null 2>&1") != 0) return "node not on PATH";
+  if (!fs::exists("/usr/bin/chromium") && !std::getenv("CHROMIUM")) return "no /usr/bin/chromium (or $CHROMIUM)";
+  if (!fs::exists(kWeb + "/node_modules/puppeteer-core") || !fs::exists(kWeb + "/node_modules/pmtiles"))
+    return "tests/web/node_modules missing: run npm ci --prefix tests/web";
+  if (!fs::exists(shared_dem("big_tujunga_srtm30_utm11n.tif"))) return "../shared/dem is absent";
+  return "";
 }
-
-#define REQUIRE_WEB()                                         \
-  do {                                                        \
-    std::string why;                                          \
-    if (!preconditions_met(why)) {                            \
-      if (std::getenv("CI")) FAIL() << why << " (CI is set)"; \
-      GTEST_SKIP() << why;                                    \
-    }                                                         \
-  } while (0)
+#define REQUIRE_WEB() SKYLIT_REQUIRE(missing_web_tools())
 
 // stdout of a shell command, and its exit status.
 std::string capture(const std::string& cmd, int& status) {

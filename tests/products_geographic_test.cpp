@@ -3,6 +3,8 @@
 // centre sees the rim at the same elevation in every direction, Earth curvature
 // included. Default settings, as `skylit shade` runs them, must come within 0.01 of
 // the closed-form svf; the same crater on a grid of one spacing is the yardstick.
+#include "terrain_test_util.h"
+
 #include "shading/horizon/horizon_ray.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
@@ -92,10 +94,7 @@ double rmse_against_exact(const terrain::HeightField& f, Product p) {
 // smoother heights are easier for every method: docs/accuracy.md.)
 TEST(GeographicProducts, RealDemHasTheErrorOfItsProjectedTwin) {
   const std::string dem = std::string(SKYLIT_SHARED_DIR) + "/dem/franconia_hills_srtm3_4326.tif";
-  if (!std::filesystem::exists(dem)) {
-    if (std::getenv("CI")) FAIL() << dem << " missing (CI is set)";
-    GTEST_SKIP() << dem << " missing";
-  }
+  SKYLIT_REQUIRE(terrain::testing::missing_file(dem));
   terrain::DemReadOptions read;
   read.window = terrain::PixelRect{300, 300, 72, 72};  // the exact march costs N³
   const terrain::HeightField geo = terrain::read_dem(dem, read).field;

@@ -8,11 +8,24 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// Skips the test when `missing` (what it needs and lacks; "" when nothing) is not empty,
+// but fails it where CI is set: CI runs every test. A macro, as GTEST_SKIP and FAIL
+// return from the test body.
+#define SKYLIT_REQUIRE(missing)                                           \
+  do {                                                                    \
+    const std::string skylit_missing_ = (missing);                        \
+    if (!skylit_missing_.empty()) {                                       \
+      if (std::getenv("CI")) FAIL() << skylit_missing_ << " (CI is set)"; \
+      GTEST_SKIP() << skylit_missing_;                                    \
+    }                                                                     \
+  } while (0)
 
 namespace skylit::terrain::testing {
 
@@ -113,5 +126,10 @@ inline std::string make_crs_less_ramp(const std::string& path) {
 }
 
 inline std::string shared_dem(const std::string& name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }
+
+// "" when `path` exists, else "<path> is missing" (for SKYLIT_REQUIRE).
+inline std::string missing_file(const std::string& path) {
+  return fs::exists(path) ? std::string() : path + " is missing";
+}
 
 }  // namespace skylit::terrain::testing

@@ -11,6 +11,7 @@
 
 #include "terrain/dem_reader.h"
 #include "terrain/web_mercator.h"
+#include "terrain_test_util.h"
 
 namespace skylit::terrain {
 namespace {
@@ -182,10 +183,7 @@ TEST(WebMercator, TmsRowsFlip) {
 
 TEST(WebMercator, NativeZoomOfBigTujunga) {
   const std::string path = std::string(SKYLIT_SHARED_DIR) + "/dem/big_tujunga_srtm30_utm11n.tif";
-  if (!std::filesystem::exists(path)) {
-    if (std::getenv("CI")) FAIL() << path << " is missing (CI is set)";
-    GTEST_SKIP() << path << " is missing";
-  }
+  SKYLIT_REQUIRE(testing::missing_file(path));
   const DemReadResult dem = read_dem(path);
   // 30 m UTM pixels; centre at 34°19'13.20"N (gdalinfo), cos φ = 0.82586.
   // 256 px: ground pixel = 156543.034 · 0.82586 / 2^z = 129282 m / 2^z:

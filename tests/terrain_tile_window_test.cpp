@@ -27,21 +27,9 @@ constexpr double kHalfWorld = 20037508.342789244;  // WebMercatorQuad, independe
 
 std::string dem_path(const char* name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }
 
-#define REQUIRE_FILE(path)                                                      \
-  do {                                                                          \
-    if (!fs::exists(path)) {                                                    \
-      if (std::getenv("CI")) FAIL() << (path) << " is missing (CI is set)";     \
-      GTEST_SKIP() << (path) << " is missing";                                  \
-    }                                                                           \
-  } while (0)
-
-#define REQUIRE_GDALWARP()                                                              \
-  do {                                                                                  \
-    if (std::system("gdalwarp --version > /dev/null 2>&1") != 0) {                      \
-      if (std::getenv("CI")) FAIL() << "gdalwarp is not on PATH (CI is set)";           \
-      GTEST_SKIP() << "gdalwarp is not on PATH";                                        \
-    }                                                                                   \
-  } while (0)
+#define REQUIRE_FILE(path) SKYLIT_REQUIRE(testing::missing_file(path))
+#define REQUIRE_GDALWARP() \
+  SKYLIT_REQUIRE(std::system("gdalwarp --version > /dev/null 2>&1") == 0 ? "" : "gdalwarp is not on PATH")
 
 std::string exact(double v) {
   char buf[32];

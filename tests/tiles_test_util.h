@@ -1,11 +1,8 @@
-// Helpers for the tile-archive tests: a scratch directory, tile sets with known bytes,
-// an archive's whole content as a map, and raw file bytes.
+// Helpers for the tile-archive tests: tile sets with known bytes, an archive's whole
+// content as a map, and raw file bytes (the scratch directory is terrain's).
 #pragma once
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "terrain_test_util.h"
 #include "tiles/archive.h"
 #include "tiles/reader.h"
 
@@ -21,31 +19,7 @@ namespace skylit::tiles::testing {
 
 namespace fs = std::filesystem;
 
-class ScratchDir {
- public:
-  ScratchDir() {
-    static std::atomic<int> n{0};
-    path_ = fs::temp_directory_path() /
-            ("skylit_tiles_test_" + std::to_string(::getpid()) + "_" + std::to_string(n++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
+using terrain::testing::ScratchDir;
 
 using Content = std::map<TileId, std::string>;
 

@@ -354,13 +354,15 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
                               "' are not the declared nodata value; treated as nodata");
 
   result.nodata_count = static_cast<std::size_t>(std::count(f.valid.begin(), f.valid.end(), 0));
-  if (result.nodata_count == n) throw DemError("'" + name + "' holds no valid height: every pixel is nodata");
-  result.min_height = lo;
-  result.max_height = hi;
+  const bool all_nodata = result.nodata_count == n;
+  if (all_nodata && !options.allow_all_nodata)
+    throw DemError("'" + name + "' holds no valid height: every pixel is nodata");
+  result.min_height = all_nodata ? 0.0 : lo;
+  result.max_height = all_nodata ? 0.0 : hi;
 
   make_north_up(f);
   // Voids only (most DEMs have none: no fill's copies and queues of the whole grid).
-  if (result.nodata_count > 0) fill_voids(f, options.fill);
+  if (result.nodata_count > 0 && !all_nodata) fill_voids(f, options.fill);
   // Outputs need a nodata value wherever the input had voids.
   f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
 

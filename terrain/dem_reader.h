@@ -60,6 +60,9 @@ struct DemReadOptions {
   std::optional<double> nodata;         // overrides the band's nodata value
   VoidFill fill = VoidFill::Laplace;
   std::optional<PixelRect> window;      // read only this source window (tiled processing)
+  // A raster (or window) with no valid height is returned with valid = 0 everywhere and
+  // heights 0 instead of an error: a block of a large DEM may lie wholly in a void.
+  bool allow_all_nodata = false;
   double min_plausible_m = -12000.0;    // valid heights outside [min, max] are an error
   double max_plausible_m = 10000.0;
 };

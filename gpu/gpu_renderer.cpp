@@ -1,5 +1,6 @@
 #include "gpu/gpu_renderer.h"
 
+#include "gpu/field_limits.h"
 #include "gpu/gpu_blockers.h"
 #include "gpu/timer.h"
 #include "shading/local_products.h"
@@ -70,6 +71,12 @@ std::optional<std::string> GpuRenderer::lacks(Product product, const shading::Pr
   if (options.exact && shading::uses_lighting(product, options))
     return "the GPU cannot compute '" + name + "' with the exact march (the sun's exact march is CPU-only)";
   return "the GPU cannot compute '" + name + "' with these options";
+}
+
+bool GpuRenderer::fits_field(int width, int height, Product product, const shading::ProductOptions& options) {
+  if (shading::traits(product).local) return true;  // computed on the host
+  context_->make_current();
+  return field_fits_gpu(width, height, product, options);
 }
 
 std::optional<std::string> GpuRenderer::lacks_blockers(Product product, const shading::ProductOptions& options) const {

@@ -40,6 +40,7 @@ class GpuRenderer final : public shading::Renderer {
   std::optional<std::string> lacks_blockers(shading::Product product,
                                             const shading::ProductOptions& options) const override;
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
+  bool fits_field(int width, int height, shading::Product product, const shading::ProductOptions& options) override;
   shading::ProductBands frame(shading::Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress = {}) override;
   const shading::FrameTimings& last_timings() const override { return timings_; }

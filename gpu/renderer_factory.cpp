@@ -46,6 +46,13 @@ class AutoRenderer final : public shading::Renderer {
     return std::nullopt;
   }
   std::optional<std::string> lacks(Product, const shading::ProductOptions&) const override { return std::nullopt; }
+  // The GPU's limits where the GPU would compute such frames.
+  bool fits_field(int width, int height, Product product, const shading::ProductOptions& options) override {
+    if (shading::traits(product).local) return true;
+    make_gpu();
+    if (!gpu_ || gpu_->lacks(product, options)) return true;
+    return gpu_->fits_field(width, height, product, options);
+  }
   shading::ProductBands frame(Product product, const shading::FrameInputs& inputs,
                               const shading::ProgressCallback& progress) override {
     const shading::ProductOptions options = shading::frame_options(options_, inputs);

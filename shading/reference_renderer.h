@@ -23,6 +23,7 @@ class ReferenceRenderer final : public Renderer {
   void drop_horizons() override;
   std::optional<std::string> lacks_blockers(Product, const ProductOptions&) const override { return std::nullopt; }
   std::optional<std::string> lacks(Product, const ProductOptions&) const override { return std::nullopt; }
+  bool fits_field(int, int, Product, const ProductOptions&) override { return true; }
   ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) override;
   const FrameTimings& last_timings() const override { return timings_; }
 

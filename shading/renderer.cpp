@@ -19,6 +19,17 @@ void validate(const FrameInputs& inputs) {
   if (inputs.lighting) validate(*inputs.lighting);
 }
 
+std::optional<int> max_square_side(Renderer& renderer, Product product, const ProductOptions& options) {
+  if (renderer.fits_field(kMaxFieldSide, kMaxFieldSide, product, options)) return std::nullopt;
+  int lo = 2, hi = kMaxFieldSide;  // lo fits (or is the floor), hi does not
+  if (!renderer.fits_field(lo, lo, product, options)) return lo;
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    (renderer.fits_field(mid, mid, product, options) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 ProductOptions frame_options(const ProductOptions& options, const FrameInputs& inputs) {
   ProductOptions o = options;
   o.lighting = inputs.lighting;

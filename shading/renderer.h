@@ -90,11 +90,21 @@ class Renderer {
   // Why this renderer cannot compute `product` with these options (one line), or nothing.
   virtual std::optional<std::string> lacks(Product product, const ProductOptions& options) const = 0;
 
+  // Whether one frame of `product` with these options takes a width × height field: the
+  // GPU's buffer and texture limits (gpu/field_limits.h); the reference is bounded by
+  // memory alone. Front ends cut larger DEMs into blocks that fit (max_square_side).
+  virtual bool fits_field(int width, int height, Product product, const ProductOptions& options) = 0;
+
   // One frame. Throws std::invalid_argument for bad options or inputs (a lit product
   // without a lighting, spheres), std::runtime_error when the backend cannot run it.
   virtual ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) = 0;
   virtual const FrameTimings& last_timings() const = 0;
 };
+
+// The side of the largest square field renderer.fits_field takes, or nothing when it
+// takes every side up to kMaxFieldSide (bounded by memory alone).
+inline constexpr int kMaxFieldSide = 1 << 20;
+std::optional<int> max_square_side(Renderer& renderer, Product product, const ProductOptions& options);
 
 // The options of a frame: `options` with the frame's lighting and exposure.
 ProductOptions frame_options(const ProductOptions& options, const FrameInputs& inputs);

@@ -35,7 +35,7 @@ ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latit
     p.max_distance_m = (p.halo - kKernelMargin) * g;
     if (request.max_distance) p.max_distance_m = std::min(p.max_distance_m, *request.max_distance);
   } else if (request.max_distance) {
-    const double h = std::ceil(*request.max_distance / g) + kKernelMargin;
+    const double h = horizon::halo_texels(*request.max_distance, g);
     if (h > kMaxUserHalo)
       throw std::invalid_argument("--max-distance " + std::to_string(*request.max_distance) + " needs a halo of " +
                                   std::to_string(static_cast<long long>(h)) + " pixels at zoom " + std::to_string(z) +
@@ -43,7 +43,7 @@ ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latit
     p.halo = static_cast<int>(h);
     p.max_distance_m = *request.max_distance;
   } else {
-    const double h = std::ceil(kDefaultMaxDistanceM / g) + kKernelMargin;
+    const double h = horizon::halo_texels(kDefaultMaxDistanceM, g);
     p.halo = static_cast<int>(std::clamp(h, double(kMinHalo), double(kMaxHalo)));
     p.max_distance_m = std::min(kDefaultMaxDistanceM, (p.halo - kKernelMargin) * g);
   }

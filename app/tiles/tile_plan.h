@@ -9,21 +9,20 @@
 #include <string>
 #include <vector>
 
+#include "shading/horizon/halo.h"
 #include "terrain/web_mercator.h"
 
 namespace skylit::app::tiles {
 
-// Default horizon search distance (ground metres): horizons farther away than this are
-// not seen. 5 km holds the ridges that shade most valleys (docs/tiles.md measures what it
-// costs against a 4× larger halo).
-inline constexpr double kDefaultMaxDistanceM = 5000.0;
+// Default horizon search distance (ground metres), and the pixels past it that the
+// march's kernels read (shading/horizon/halo.h).
+inline constexpr double kDefaultMaxDistanceM = horizon::kDefaultBoundedDistanceM;
+inline constexpr int kKernelMargin = horizon::kKernelMarginTexels;
 // The default halo is clamped to this pixel range: at least a few pixels at low zooms
 // (normals and pyramid kernels read past the tile), at most this many at high zooms
 // (where the distance then shrinks to what the halo holds).
 inline constexpr int kMinHalo = 16;
 inline constexpr int kMaxHalo = 256;
-// Pixels past the horizon distance that the march's pyramid and B-spline kernels read.
-inline constexpr int kKernelMargin = 8;
 // Largest halo an explicit --halo or --max-distance may ask for.
 inline constexpr int kMaxUserHalo = 4096;
 // Window blocks: at most kBlockPixels pixels of tiles per side; fewer rows where the

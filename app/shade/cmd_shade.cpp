@@ -4,6 +4,7 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/shade/blocked_shade.h"
 #include "app/shade/color_relief_cmd.h"
 #include "app/shade/hillshade_args.h"
 #include "app/shade/max_error.h"
@@ -80,6 +81,7 @@ struct ShadeArgs {
   std::string track;    // --track FILE
   std::string aircraft = "glider";
   std::string altitude = "gnss";
+  std::string block_size = "auto";  // --block-size N|auto
 };
 
 // `--timings`: where the wall time went, one stage a line (stderr). The GPU stages come
@@ -223,9 +225,9 @@ std::vector<blockers::Sphere> spheres_at(const std::vector<blockers::Sphere>& sp
 
 int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading::Product product,
                      const std::optional<shading::SummedProduct>& summed, const shading::LightingRequest& request,
-                     const terrain::HeightField& field, const shading::ProductOptions& opt, gpu::Backend backend,
+                     const terrain::HeightField& field, const shading::ProductOptions& opt,
                      OutputSpec summed_out, const std::vector<blockers::Sphere>& spheres,
-                     const std::optional<TrackedAircraft>& aircraft) {
+                     const std::optional<TrackedAircraft>& aircraft, shading::Renderer& renderer) {
   SeriesJob job;
   if (!spheres.empty() || aircraft)
     job.spheres_at = [&spheres, &aircraft](double t) { return spheres_at(spheres, aircraft, t); };
@@ -252,15 +254,94 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
     std::cerr << "skylit: " << job.instants.size() << " times from "
               << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.front())) << " to "
               << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.back())) << "\n";
-  const auto renderer = make_shade_renderer(backend, a.quiet);
   shading::ProductOptions frame_opt = opt;
   frame_opt.lighting = shading::Lighting{};  // lit: the renderer's check sees a lit product
-  if (const auto why = renderer->lacks(product, frame_opt))
+  if (const auto why = renderer.lacks(product, frame_opt))
     throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
                                 "; use --backend reference (or auto)");
-  renderer->set_field(field);
-  renderer->set_options(opt);
-  run_series(*renderer, field, job);
+  renderer.set_field(field);
+  renderer.set_options(opt);
+  run_series(renderer, field, job);
+  return 0;
+}
+
+// --block-size: a core side, or nothing for auto.
+std::optional<int> parse_block_size(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  std::size_t used = 0;
+  int n = 0;
+  try {
+    n = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) throw std::invalid_argument("--block-size '" + text + "' is not a number of texels or auto");
+  return n;
+}
+
+// The whole run in blocks where the DEM needs them (blocked_shade.h), else nothing.
+std::optional<int> run_shade_in_blocks(const ShadeArgs& a, shading::Product product, const OutputSpec& out,
+                                       const shading::LightingRequest& request, bool lit, bool series,
+                                       const shading::ProductOptions& opt, shading::Renderer& renderer,
+                                       const std::optional<TintArgs>& tint_args,
+                                       const std::vector<blockers::Sphere>& crs_spheres) {
+  const std::optional<int> requested = parse_block_size(a.block_size);
+  if (a.synthetic) {
+    if (requested)
+      throw std::invalid_argument("--block-size reads a DEM file in windows: write the scene with `skylit scene` "
+                                  "and shade that file");
+    return std::nullopt;
+  }
+  if (a.inputs.empty()) return std::nullopt;  // load_input says what is missing
+  terrain::DemReadOptions read;
+  read.scale = a.scale;
+  read.xscale = a.xscale;
+  read.yscale = a.yscale;
+  read.z_factor = shading::traits(product).local ? 1.0 : a.z_factor;
+  read.band = a.band;
+  read.nodata = a.nodata;
+  const terrain::DemInfo dem = terrain::inspect_dem(a.inputs);
+  std::vector<std::string> warnings;  // the blocks' reads report them
+  terrain::MetricSpacing spacing;
+  try {
+    spacing = terrain::metric_spacing(dem.georef, dem.height, read, warnings);
+  } catch (const terrain::DemError&) {
+    return std::nullopt;  // the whole DEM's read reports it, naming the file
+  }
+  const double smallest = std::min(spacing.dy, *std::min_element(spacing.dx_per_row.begin(), spacing.dx_per_row.end()));
+  const std::optional<BlockPlan> plan = plan_blocks(dem, smallest, product, opt, requested, renderer);
+  if (!plan) return std::nullopt;
+  if (series) throw std::invalid_argument("a --time series of a DEM in blocks is not supported: shade one time per run");
+  if (!a.track.empty()) throw std::invalid_argument("--track with a DEM in blocks is not supported: give the aircraft as --spheres");
+  if (!a.quiet)
+    for (const std::string& note : plan->notes) std::cerr << "skylit: note: " << note << "\n";
+  BlockedShade job;
+  job.inputs = a.inputs;
+  job.read = read;
+  job.product = product;
+  job.options = opt;
+  job.crs_spheres = crs_spheres;
+  job.tint = tint_args;
+  job.out = out;
+  job.quiet = a.quiet;
+  if (lit) {
+    std::optional<sky::Observer> place;
+    if (shading::needs_place(request)) {
+      // The DEM's centre, as dem_place gives for a whole field.
+      if (const auto at = terrain::grid_centre_lat_lon(dem.georef, dem.width, dem.height)) {
+        terrain::DemReadOptions centre = read;
+        centre.window = terrain::PixelRect{std::min(dem.width / 2, dem.width - 2), std::min(dem.height / 2, dem.height - 2), 2, 2};
+        centre.allow_all_nodata = true;
+        place = sky::Observer{at->latitude_deg, at->longitude_deg, terrain::read_dem(a.inputs, centre).field.heights[0]};
+      }
+    }
+    const auto resolved = shading::resolve_lighting(request, place);
+    job.lighting = resolved.lighting;
+    if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
+  }
+  run_blocked_shade(job, *plan, dem, renderer);
+  if (!a.quiet) std::cerr << "skylit: computed on " << renderer.description() << "\nskylit: wrote " << out.path << " ("
+                          << dem.width << "x" << dem.height << ")\n";
   return 0;
 }
 
@@ -313,6 +394,18 @@ int run_shade(const ShadeArgs& a) {
       throw std::invalid_argument("--color tints -p shaded (one frame) or makes -p color-relief");
     parse_tint_blend(a.tint_blend, tint_args);
   }
+  shading::ProductOptions opt = a.options;
+  opt.march.curvature.enabled = !a.no_curvature;
+  opt.threads = a.threads;
+  opt.shaded.tone = tone_curve(a.light);
+  if (kind.local)
+    opt.hillshade = hillshade_options(a.hillshade, a.z_factor, a.light.request.sun_azimuth_deg, a.light.request.sun_elevation_deg,
+                                      a.compute_edges);
+  const auto renderer = make_shade_renderer(backend, a.quiet);
+  if (const auto done = run_shade_in_blocks(a, *product, out, request, lit, times.has_value(), opt, *renderer,
+                                            tinted ? std::optional(tint_args) : std::nullopt, crs_spheres))
+    return *done;
+
   const auto read_start = std::chrono::steady_clock::now();
   // Local products apply z inside their formula, as gdaldem does: heights stay unscaled.
   const terrain::HeightField field = load_input(a, kind.local ? 1.0 : a.z_factor);
@@ -329,18 +422,11 @@ int run_shade(const ShadeArgs& a) {
               << "they reach above it\n";
   const double read_ms = gpu::ms_since(read_start);
 
-  shading::ProductOptions opt = a.options;
-  opt.march.curvature.enabled = !a.no_curvature;
-  opt.threads = a.threads;
-  opt.shaded.tone = tone_curve(a.light);
-  if (kind.local)
-    opt.hillshade = hillshade_options(a.hillshade, a.z_factor, a.light.request.sun_azimuth_deg, a.light.request.sun_elevation_deg,
-                                      a.compute_edges);
   if (const std::string note = sweep_fallback_note(field, opt, a.horizons_given); !note.empty() && !a.quiet)
     std::cerr << "skylit: note: " << note << "\n";
   if (times)
-    return run_shade_series(a, *times, *product, summed, request, field, opt, backend, std::move(out), spheres,
-                            aircraft);
+    return run_shade_series(a, *times, *product, summed, request, field, opt, std::move(out), spheres,
+                            aircraft, *renderer);
   const std::vector<blockers::Sphere> frame_spheres =
       spheres_at(spheres, aircraft, aircraft ? sky::parse_utc_time(a.light.request.time).unix_seconds : 0.0);
   if (aircraft && frame_spheres.size() == spheres.size() && !a.quiet)
@@ -352,7 +438,6 @@ int run_shade(const ShadeArgs& a) {
     if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
   }
 
-  const auto renderer = make_shade_renderer(backend, a.quiet);
   if (const auto why = renderer->lacks(*product, opt))
     throw std::invalid_argument("--backend " + a.backend + (opt.exact ? " with --exact: " : ": ") + *why +
                                 "; use --backend reference (or auto)");
@@ -479,6 +564,11 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--backend", args->backend,
                   "Compute backend: auto (GPU where an OpenGL 4.5 context exists and the GPU has the product, "
                   "else reference) | gpu | reference (CPU, double precision)")
+      ->capture_default_str();
+  cmd->add_option("--block-size", args->block_size,
+                  "Shade the DEM in blocks of N x N texels, each read with a halo of the horizon search distance "
+                  "(--max-distance, 5 km by default when blocked), so memory is bounded by the block: N | auto "
+                  "(blocks where the DEM is over the GPU's limits or 4096^2 texels; docs/large-dems.md)")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges,

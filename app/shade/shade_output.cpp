@@ -79,23 +79,31 @@ void write_product(const OutputSpec& spec, const terrain::HeightField& field, co
   opt.band_descriptions = bands.band_names;
   opt.overwrite = spec.overwrite;
   if (spec.eight_bit) {
-    std::vector<std::uint8_t> bytes(bands.data.size());
-    for (std::size_t k = 0; k < bytes.size(); ++k) {
-      const float v = bands.data[k];
-      bytes[k] = std::isfinite(v) ? static_cast<std::uint8_t>(std::clamp(std::lround(v), 1L, 255L))
-                                  : static_cast<std::uint8_t>(kByteNodata);
-    }
     opt.nodata = kByteNodata;
     terrain::write_raster(spec.path, field.georef, bands.width, bands.height, bands.bands,
-                          std::span<const std::uint8_t>(bytes), opt);
+                          std::span<const std::uint8_t>(byte_samples(bands.data)), opt);
   } else {
-    std::vector<float> data(bands.data);
-    for (float& v : data)
-      if (!std::isfinite(v)) v = static_cast<float>(kFloatNodata);
     opt.nodata = kFloatNodata;
     terrain::write_raster(spec.path, field.georef, bands.width, bands.height, bands.bands,
-                          std::span<const float>(data), opt);
+                          std::span<const float>(float_samples(bands.data)), opt);
   }
+}
+
+std::vector<std::uint8_t> byte_samples(std::span<const float> values) {
+  std::vector<std::uint8_t> bytes(values.size());
+  for (std::size_t k = 0; k < bytes.size(); ++k) {
+    const float v = values[k];
+    bytes[k] = std::isfinite(v) ? static_cast<std::uint8_t>(std::clamp(std::lround(v), 1L, 255L))
+                                : static_cast<std::uint8_t>(kByteNodata);
+  }
+  return bytes;
+}
+
+std::vector<float> float_samples(std::span<const float> values) {
+  std::vector<float> data(values.begin(), values.end());
+  for (float& v : data)
+    if (!std::isfinite(v)) v = static_cast<float>(kFloatNodata);
+  return data;
 }
 
 }  // namespace skylit::app::shade

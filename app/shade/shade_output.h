@@ -7,6 +7,8 @@
 #include "shading/products.h"
 #include "terrain/height_field.h"
 
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,5 +30,10 @@ OutputSpec resolve_output(const std::string& path, const std::string& format, sh
                           const std::vector<std::string>& creation_options, bool overwrite);
 
 void write_product(const OutputSpec& spec, const terrain::HeightField& field, const shading::ProductBands& bands);
+
+// The written samples of float bands: 8-bit codes 1…255 with kByteNodata where not
+// finite, or Float32 with kFloatNodata there.
+std::vector<std::uint8_t> byte_samples(std::span<const float> values);
+std::vector<float> float_samples(std::span<const float> values);
 
 }  // namespace skylit::app::shade

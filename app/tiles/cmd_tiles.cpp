@@ -14,6 +14,7 @@
 #include "app/common/lighting_args.h"
 #include "app/shade/hillshade_args.h"
 #include "app/tiles/merge_cmd.h"
+#include "app/tiles/run_fingerprint.h"
 #include "app/tiles/tile_plan.h"
 #include "app/tiles/tile_run.h"
 #include "app/tiles/web_viewer.h"
@@ -206,6 +207,9 @@ int run_tiles(const TilesArgs& a) {
   meta.minzoom = zooms.min;
   meta.maxzoom = zooms.max;
   meta.description = "skylit tiles -p " + a.product;
+  RunOptions run{a.inputs, a.product, a.quality, a.resampling, a.light.tone, request, zooms, a.tile_size,
+                 format, a.tms, plans};
+  meta.fingerprint = archive_options.fingerprint = run_fingerprint(run);
   st::validate(meta);
 
   LazyArchive archive(a.output, archive_options);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "terrain/dem_reader.h"
 
@@ -136,21 +137,56 @@ NodeGrid::Node NodeGrid::node(long long i, long long j) const {
   return {x, y, ok != 0};
 }
 
-bool NodeGrid::source(double gx, double gy, double& sx, double& sy) const {
-  // Spacing 1: the curvature is too high for interpolation between pixels (low zooms of
-  // fine DEMs, whose windows are small), so every point is exact.
-  if (spacing_ <= 1) return exact_source(gx, gy, sx, sy);
+NodeGrid::Cell NodeGrid::cell(long long i, long long j) const {
+  Cell c{i, j, node(i, j), node(i + 1, j), node(i, j + 1), node(i + 1, j + 1), false};
+  c.ok = c.a.ok && c.b.ok && c.c.ok && c.d.ok;
+  return c;
+}
+
+// One formula for source() and sources(), so both give the same bits.
+void NodeGrid::locate(double gx, double gy, long long& i, long long& j, double& fx, double& fy) const {
   // Division by a power of two and the subtraction are exact: fx, fy are the same
   // bits in every window.
   const double tx = gx / spacing_, ty = gy / spacing_;
   const double fi = std::floor(tx), fj = std::floor(ty);
-  const double fx = tx - fi, fy = ty - fj;
-  const auto i = static_cast<long long>(fi), j = static_cast<long long>(fj);
-  const Node a = node(i, j), b = node(i + 1, j), c = node(i, j + 1), d = node(i + 1, j + 1);
-  if (!(a.ok && b.ok && c.ok && d.ok)) return false;
-  sx = (1 - fy) * ((1 - fx) * a.x + fx * b.x) + fy * ((1 - fx) * c.x + fx * d.x);
-  sy = (1 - fy) * ((1 - fx) * a.y + fx * b.y) + fy * ((1 - fx) * c.y + fx * d.y);
-  return true;
+  fx = tx - fi;
+  fy = ty - fj;
+  i = static_cast<long long>(fi);
+  j = static_cast<long long>(fj);
+}
+
+void NodeGrid::interpolate(const Cell& c, double fx, double fy, double& sx, double& sy) {
+  sx = (1 - fy) * ((1 - fx) * c.a.x + fx * c.b.x) + fy * ((1 - fx) * c.c.x + fx * c.d.x);
+  sy = (1 - fy) * ((1 - fx) * c.a.y + fx * c.b.y) + fy * ((1 - fx) * c.c.y + fx * c.d.y);
+}
+
+bool NodeGrid::source(double gx, double gy, double& sx, double& sy) const {
+  // Spacing 1: the curvature is too high for interpolation between pixels (low zooms of
+  // fine DEMs, whose windows are small), so every point is exact.
+  if (spacing_ <= 1) return exact_source(gx, gy, sx, sy);
+  long long i = 0, j = 0;
+  double fx = 0, fy = 0;
+  locate(gx, gy, i, j, fx, fy);
+  const Cell c = cell(i, j);
+  if (c.ok) interpolate(c, fx, fy, sx, sy);
+  return c.ok;
+}
+
+void NodeGrid::sources(std::size_t n, double* x, double* y, int* ok, double offset_x, double offset_y) const {
+  std::optional<Cell> c;  // the warper asks row by row: consecutive points share a cell
+  for (std::size_t k = 0; k < n; ++k) {
+    const double gx = offset_x + x[k], gy = offset_y + y[k];
+    if (spacing_ <= 1) {
+      ok[k] = exact_source(gx, gy, x[k], y[k]);
+      continue;
+    }
+    long long i = 0, j = 0;
+    double fx = 0, fy = 0;
+    locate(gx, gy, i, j, fx, fy);
+    if (!c || c->i != i || c->j != j) c = cell(i, j);
+    ok[k] = c->ok;
+    if (c->ok) interpolate(*c, fx, fy, x[k], y[k]);
+  }
 }
 
 bool NodeGrid::exact_source(double gx, double gy, double& sx, double& sy) const {
@@ -171,6 +207,10 @@ bool NodeGrid::global_pixel(double sx, double sy, double& gx, double& gy) const 
 
 int window_transform(void* arg, int dst_to_src, int n, double* x, double* y, double* /*z*/, int* ok) {
   const auto& w = *static_cast<const WindowTransformArg*>(arg);
+  if (dst_to_src) {
+    w.grid->sources(static_cast<std::size_t>(n), x, y, ok, static_cast<double>(w.gx0), static_cast<double>(w.gy0));
+    return TRUE;
+  }
   for (int k = 0; k < n; ++k) {
     double a = 0, b = 0;
     const bool good = dst_to_src ? w.grid->source(static_cast<double>(w.gx0) + x[k], static_cast<double>(w.gy0) + y[k], a, b)

@@ -83,6 +83,9 @@ class NodeGrid {
   int spacing() const { return spacing_; }
   // Global pixel coordinates → source pixels; false where a node failed.
   bool source(double gx, double gy, double& sx, double& sy) const;
+  // source() of n points (offset_x + x[k], offset_y + y[k]) in place, ok[k] its result:
+  // the same bits, with each cell's nodes fetched once per run of points in it.
+  void sources(std::size_t n, double* x, double* y, int* ok, double offset_x, double offset_y) const;
   // The exact transform of the same point (for tests and the inverse direction).
   bool exact_source(double gx, double gy, double& sx, double& sy) const;
   // Source pixels → global pixel coordinates, exact.
@@ -93,7 +96,15 @@ class NodeGrid {
     double x = 0, y = 0;
     bool ok = false;
   };
+  struct Cell {
+    long long i = 0, j = 0;
+    Node a, b, c, d;  // nodes (i, j), (i+1, j), (i, j+1), (i+1, j+1)
+    bool ok = false;
+  };
   Node node(long long i, long long j) const;
+  Cell cell(long long i, long long j) const;
+  void locate(double gx, double gy, long long& i, long long& j, double& fx, double& fy) const;
+  static void interpolate(const Cell& c, double fx, double fy, double& sx, double& sy);
 
   const MercatorToDem* exact_;
   double p_;

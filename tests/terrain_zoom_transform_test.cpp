@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "terrain/dem_reader.h"
 #include "terrain/tile_window.h"
@@ -98,6 +99,22 @@ TEST(ZoomTransform, WindowsAgreeBitForBit) {
     EXPECT_EQ(ay, by);
     EXPECT_EQ(ax, nx);
     EXPECT_EQ(ay, ny);
+  }
+  // The batch the warper calls gives the single-point bits.
+  std::vector<double> x, y;
+  for (int k = 0; k < 100; ++k) {
+    x.push_back(0.5 + k * 0.75);
+    y.push_back(0.5 + (k / 10) * 3.0);
+  }
+  std::vector<double> bx(x), by(y);
+  std::vector<int> ok(x.size());
+  a.sources(x.size(), bx.data(), by.data(), ok.data(), double(gx), double(gy));
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    double sx = 0, sy = 0;
+    ASSERT_TRUE(ok[k]);
+    ASSERT_TRUE(a.source(gx + x[k], gy + y[k], sx, sy));
+    EXPECT_EQ(bx[k], sx);
+    EXPECT_EQ(by[k], sy);
   }
   // At a node the approximation is the exact transform.
   double ax = 0, ay = 0, ex = 0, ey = 0;

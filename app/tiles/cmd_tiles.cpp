@@ -189,12 +189,13 @@ int run_tiles(const TilesArgs& a) {
     });
     if (const auto why = renderer->lacks(*job.product, job.options)) throw std::invalid_argument(*why);
   }
+  const bool horizons = job.product && !shading::traits(*job.product).local;  // else no halo to report
   if (!a.quiet) {
     std::cerr << "skylit: zooms " << zooms.min << "-" << zooms.max << " (native " << source.native_zoom(a.tile_size)
               << "), " << mine.size() << " of " << all.size() << " window blocks (shard " << shard.index << "/"
-              << shard.count << ")" << (job.product ? "; halo and horizon distance:" : "");
+              << shard.count << ")" << (horizons ? "; halo and horizon distance:" : "");
     for (const ZoomPlan& p : plans)
-      if (job.product) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
+      if (horizons) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
     std::cerr << "\n";
   }
 

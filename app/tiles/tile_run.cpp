@@ -46,6 +46,17 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
   if (error) std::rethrow_exception(error);
 }
 
+// The halo a block's window needs: the horizons' (plan.halo) for products that search
+// them; one pixel for the 3×3-window products (hillshade: gdaldem's kernel reads one
+// neighbour each way, and a pixel's height is the same in every window, so its tiles
+// are the same bytes as with the horizon halo, at up to half the warped pixels at
+// z 13); none for the DEM encodings, which read no neighbours.
+int window_halo(const TileJob& job, const ZoomPlan& plan) {
+  constexpr int kLocalProductHalo = 1;
+  if (!job.product) return 0;
+  return shading::traits(*job.product).local ? kLocalProductHalo : plan.halo;
+}
+
 std::vector<terrain::TileId> tiles_of(const terrain::TileRange& r) {
   std::vector<terrain::TileId> out;
   for (int y = r.y0; y <= r.y1; ++y)
@@ -76,7 +87,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     const ZoomPlan& plan = plan_of(plans, b.z);
     terrain::TileWindowOptions wo;
     wo.tile_size = job.tile_size;
-    wo.halo = job.product ? plan.halo : 0;  // DEM encodings read no neighbours
+    wo.halo = window_halo(job, plan);
     wo.resampling = job.resampling;
     // Outside the DEM (transparent in the tiles) only the heights next to its edge matter,
     // as near blockers: the nearest valid height, O(N), where the smooth Laplace fill took

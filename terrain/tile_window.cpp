@@ -1,5 +1,6 @@
-// Per-zoom height windows: an in-memory copy of the DEM warped by GDALWarp (the
-// library behind gdalwarp) onto a zoom's EPSG:3857 pixel grid.
+// Per-zoom height windows: an in-memory copy of the DEM warped by GDAL's warper (the
+// engine of gdalwarp) onto a zoom's EPSG:3857 pixel grid, through the node-grid
+// transformer of terrain/zoom_transform.h.
 #include "terrain/tile_window.h"
 
 #include <gdalwarper.h>

@@ -207,23 +207,16 @@ bool NodeGrid::global_pixel(double sx, double sy, double& gx, double& gy) const 
 
 int window_transform(void* arg, int dst_to_src, int n, double* x, double* y, double* /*z*/, int* ok) {
   const auto& w = *static_cast<const WindowTransformArg*>(arg);
-  if (dst_to_src) {
+  if (dst_to_src) {  // the warper's pixels → the DEM: the approximation
     w.grid->sources(static_cast<std::size_t>(n), x, y, ok, static_cast<double>(w.gx0), static_cast<double>(w.gy0));
     return TRUE;
   }
-  for (int k = 0; k < n; ++k) {
-    double a = 0, b = 0;
-    const bool good = dst_to_src ? w.grid->source(static_cast<double>(w.gx0) + x[k], static_cast<double>(w.gy0) + y[k], a, b)
-                                 : w.grid->global_pixel(x[k], y[k], a, b);
-    if (!dst_to_src) {
-      a -= static_cast<double>(w.gx0);
-      b -= static_cast<double>(w.gy0);
-    }
-    ok[k] = good ? TRUE : FALSE;
-    if (good) {
-      x[k] = a;
-      y[k] = b;
-    }
+  for (int k = 0; k < n; ++k) {  // the DEM → the window's pixels, exact (not on the per-pixel path)
+    double gx = 0, gy = 0;
+    ok[k] = w.grid->global_pixel(x[k], y[k], gx, gy) ? TRUE : FALSE;
+    if (!ok[k]) continue;
+    x[k] = gx - static_cast<double>(w.gx0);
+    y[k] = gy - static_cast<double>(w.gy0);
   }
   return TRUE;  // per-point failures are in ok[]; the call itself succeeded
 }

@@ -22,12 +22,14 @@ std::string run_fingerprint(const RunOptions& o) {
   std::ostringstream f;
   f << "skylit=" << SKYLIT_VERSION << "\n";
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-    std::error_code ec;
-    const fs::path p = fs::weakly_canonical(fs::absolute(o.inputs[i]), ec);
-    const auto size = fs::file_size(p, ec);
-    const auto mtime = fs::last_write_time(p, ec).time_since_epoch().count();
-    f << "dem" << (i + 1) << "=" << p.string() << " " << (ec ? 0 : size) << " bytes, mtime " << (ec ? 0 : mtime)
-      << "\n";
+    // A folder of tiles (no file size) or an unreadable stat records 0: still the same
+    // text for the same input.
+    std::error_code path_ec, size_ec, time_ec;
+    const fs::path p = fs::weakly_canonical(fs::absolute(o.inputs[i]), path_ec);
+    const auto size = fs::file_size(p, size_ec);
+    const auto mtime = fs::last_write_time(p, time_ec).time_since_epoch().count();
+    f << "dem" << (i + 1) << "=" << p.string() << " " << (size_ec ? 0 : size) << " bytes, mtime "
+      << (time_ec ? 0 : mtime) << "\n";
   }
   f << "product=" << o.product << "\n"
     << "quality=" << o.quality << "\n"

@@ -1,8 +1,9 @@
-// Per-zoom height windows: an in-memory copy of the DEM warped by GDALWarp (the
-// library behind gdalwarp) onto a zoom's EPSG:3857 pixel grid.
+// Per-zoom height windows: an in-memory copy of the DEM warped by GDAL's warper (the
+// engine of gdalwarp) onto a zoom's EPSG:3857 pixel grid, through the node-grid
+// transformer of terrain/zoom_transform.h.
 #include "terrain/tile_window.h"
 
-#include <gdal_utils.h>
+#include <gdalwarper.h>
 #include <ogr_spatialref.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "terrain/gdal_util.h"
 #include "terrain/geolocation.h"
+#include "terrain/zoom_transform.h"
 
 namespace skylit::terrain {
 namespace {
@@ -41,6 +43,18 @@ double kernel_radius(Resampling r) {
     case Resampling::Average: return 1.0;
   }
   return 3.0;
+}
+
+GDALResampleAlg gdal_resampling(Resampling r) {
+  switch (r) {
+    case Resampling::Nearest: return GRA_NearestNeighbour;
+    case Resampling::Bilinear: return GRA_Bilinear;
+    case Resampling::Cubic: return GRA_Cubic;
+    case Resampling::CubicSpline: return GRA_CubicSpline;
+    case Resampling::Lanczos: return GRA_Lanczos;
+    case Resampling::Average: return GRA_Average;
+  }
+  return GRA_Cubic;
 }
 
 std::string exact(double v) {
@@ -88,18 +102,32 @@ std::vector<std::string> WarpSettings::arguments() const {
 }
 
 struct TileWindowSource::Impl {
+  explicit Impl(const HeightField& dem) : to_dem(dem.georef) {}
+  void warp_into(GDALDataset& out, long long gx0, long long gy0, long long w, long long h, const WarpSettings& s,
+                 int zoom, int tile_size) const;
+
   DatasetPtr source;                 // MEM, Float32, NaN at voids
+  bool voids = false;
+  MercatorToDem to_dem;              // the exact transform, made once (PROJ set-up costs ms)
+  Curvature curvature;               // of to_dem over the DEM's widened Mercator box
+  std::string mercator_wkt;          // EPSG:3857 as WKT2, the windows' CRS
   double centre_latitude = 0.0;      // degrees
   double resolution_x = 0.0, resolution_y = 0.0;  // ground metres per DEM pixel
   int native_256 = 0, native_512 = 0;
   std::optional<double> nodata;
 };
 
-TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_unique<Impl>()) {
+namespace {
+const HeightField& checked(const HeightField& dem) {
   if (dem.georef.crs_wkt.empty())
     throw DemError("the DEM has no CRS, so it cannot be warped to web-map tiles (EPSG:3857); assign one first");
   if (!dem.georef.has_geotransform)
     throw DemError("the DEM has no geotransform, so it cannot be warped to web-map tiles (EPSG:3857)");
+  return dem;
+}
+}  // namespace
+
+TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_unique<Impl>(checked(dem))) {
   const std::size_t n = static_cast<std::size_t>(dem.width) * dem.height;
   if (dem.width < 1 || dem.height < 1 || dem.heights.size() != n || dem.valid.size() != n ||
       static_cast<int>(dem.dx_per_row.size()) != dem.height)
@@ -131,9 +159,61 @@ TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_uni
     }
   GDALRasterBand& band = *ds.GetRasterBand(1);
   if (voids) band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+  impl_->voids = voids;
   if (band.RasterIO(GF_Write, 0, 0, dem.width, dem.height, values.data(), dem.width, dem.height, GDT_Float32, 0, 0,
                     nullptr) != CE_None)
     throw DemError("cannot fill the in-memory DEM copy: " + capture.failure());
+
+  // The curvature over the DEM's box widened by its size on every side: windows reach
+  // past the DEM by their halo and the rest of their edge tiles, and only pixels whose
+  // kernel touches the DEM keep a height.
+  const MercatorBox b = dem_mercator_bounds(dem);
+  const double wx = b.xmax - b.xmin, wy = b.ymax - b.ymin;
+  impl_->curvature = impl_->to_dem.curvature({b.xmin - wx, b.ymin - wy, b.xmax + wx, b.ymax + wy});
+  OGRSpatialReference mercator;
+  mercator.importFromEPSG(3857);
+  char* wkt = nullptr;
+  const char* wkt_opts[] = {"FORMAT=WKT2_2019", nullptr};
+  if (mercator.exportToWkt(&wkt, wkt_opts) != OGRERR_NONE || !wkt) throw DemError("cannot write EPSG:3857 as WKT");
+  impl_->mercator_wkt = wkt;
+  CPLFree(wkt);
+}
+
+// GDAL's warper (the engine of gdalwarp) with the node-grid transformer instead of
+// gdalwarp's exact one; the other settings are WarpSettings::arguments()'s.
+void TileWindowSource::Impl::warp_into(GDALDataset& out, long long gx0, long long gy0, long long w, long long h,
+                                       const WarpSettings& s, int zoom, int tile_size) const {
+  const NodeGrid grid(to_dem, zoom, tile_size, s.node_spacing, gx0, gy0, gx0 + w, gy0 + h);
+  WindowTransformArg arg{&grid, gx0, gy0};
+  GdalErrorCapture capture;
+  GDALWarpOptions* wo = GDALCreateWarpOptions();
+  wo->hSrcDS = GDALDataset::ToHandle(source.get());
+  wo->hDstDS = GDALDataset::ToHandle(&out);
+  wo->nBandCount = 1;
+  wo->panSrcBands = static_cast<int*>(CPLMalloc(sizeof(int)));
+  wo->panDstBands = static_cast<int*>(CPLMalloc(sizeof(int)));
+  wo->panSrcBands[0] = wo->panDstBands[0] = 1;
+  wo->eResampleAlg = gdal_resampling(s.resampling);
+  wo->eWorkingDataType = GDT_Float32;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  wo->padfDstNoDataReal = static_cast<double*>(CPLMalloc(sizeof(double)));
+  wo->padfDstNoDataReal[0] = nan;
+  if (voids) {
+    wo->padfSrcNoDataReal = static_cast<double*>(CPLMalloc(sizeof(double)));
+    wo->padfSrcNoDataReal[0] = nan;
+  }
+  wo->papszWarpOptions = CSLSetNameValue(wo->papszWarpOptions, "INIT_DEST", "NO_DATA");
+  wo->papszWarpOptions = CSLSetNameValue(wo->papszWarpOptions, "XSCALE", exact(s.xscale).c_str());
+  wo->papszWarpOptions = CSLSetNameValue(wo->papszWarpOptions, "YSCALE", exact(s.yscale).c_str());
+  wo->papszWarpOptions =
+      CSLSetNameValue(wo->papszWarpOptions, "SOURCE_EXTRA", std::to_string(s.source_extra).c_str());
+  wo->pfnTransformer = window_transform;
+  wo->pTransformerArg = &arg;
+  GDALWarpOperation op;
+  const bool ok = op.Initialize(wo) == CE_None &&
+                  op.ChunkAndWarpImage(0, 0, static_cast<int>(w), static_cast<int>(h)) == CE_None;
+  GDALDestroyWarpOptions(wo);  // frees the arrays and options, not our transformer
+  if (!ok) throw DemError("cannot warp the DEM to zoom " + std::to_string(zoom) + ": " + capture.failure());
 }
 
 TileWindowSource::~TileWindowSource() = default;
@@ -156,6 +236,8 @@ WarpSettings TileWindowSource::warp_settings(int zoom, const TileWindowOptions& 
   // The warper pads its source window by the kernel radius over its own scale
   // estimate; pad by ours, plus one, so the fixed kernel is never cut short.
   s.source_extra = static_cast<int>(std::ceil(kernel_radius(s.resampling) / std::min(s.xscale, s.yscale))) + 1;
+  s.node_spacing = node_spacing(impl_->curvature, pixel_size(zoom, options.tile_size));
+  s.node_error_bound_px = node_error_bound(impl_->curvature, pixel_size(zoom, options.tile_size), s.node_spacing);
   return s;
 }
 
@@ -177,27 +259,19 @@ TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOpti
   // Global pixel (gx, gy) of the zoom starts at x = −S + gx·p, y = S − gy·p.
   const long long gx0 = tiles.x0 * T - H, gy0 = tiles.y0 * T - H;
   const double s = kWebMercatorOriginShift;
-  const double xmin = -s + static_cast<double>(gx0) * p, xmax = -s + static_cast<double>(gx0 + w) * p;
+  const double xmin = -s + static_cast<double>(gx0) * p;
   const double ymax = s - static_cast<double>(gy0) * p, ymin = s - static_cast<double>(gy0 + h) * p;
 
   const WarpSettings settings = warp_settings(tiles.z, options);
-  std::vector<std::string> args = {"-of", "MEM", "-te", exact(xmin), exact(ymin), exact(xmax), exact(ymax),
-                                   "-ts", std::to_string(w), std::to_string(h)};
-  for (auto& a : settings.arguments()) args.push_back(std::move(a));
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-
   GdalErrorCapture capture;
-  GDALWarpAppOptions* opts = GDALWarpAppOptionsNew(argv.data(), nullptr);
-  if (!opts) throw DemError("invalid warp options: " + capture.failure());
-  GDALDatasetH src = GDALDataset::ToHandle(impl_->source.get());
-  int usage_error = 0;
-  DatasetPtr out(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &src, opts, &usage_error)));
-  GDALWarpAppOptionsFree(opts);
-  if (!out || usage_error)
-    throw DemError("cannot warp the DEM to zoom " + std::to_string(tiles.z) + ": " + capture.failure());
-
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  DatasetPtr out(mem ? mem->Create("", static_cast<int>(w), static_cast<int>(h), 1, GDT_Float32, nullptr) : nullptr);
+  if (!out) throw DemError("cannot create the in-memory window: " + capture.failure());
+  std::array<double, 6> out_gt{xmin, p, 0.0, ymax, 0.0, -p};
+  out->SetGeoTransform(out_gt.data());
+  out->SetProjection(impl_->mercator_wkt.c_str());
+  out->GetRasterBand(1)->SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
+  impl_->warp_into(*out, gx0, gy0, w, h, settings, tiles.z, options.tile_size);
   TileWindow win;
   win.tiles = tiles;
   win.tile_size = options.tile_size;
@@ -221,14 +295,8 @@ TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOpti
   f.nodata = impl_->nodata ? impl_->nodata
                            : (win.valid_count < n ? std::optional<double>(-32768.0) : std::nullopt);
 
-  f.georef.geotransform = {xmin, p, 0.0, ymax, 0.0, -p};
-  out->GetGeoTransform(f.georef.geotransform.data());  // GDAL's own (xmax − xmin) / w
-  if (const OGRSpatialReference* srs = out->GetSpatialRef()) {
-    char* wkt = nullptr;
-    const char* wkt_opts[] = {"FORMAT=WKT2_2019", nullptr};
-    if (srs->exportToWkt(&wkt, wkt_opts) == OGRERR_NONE && wkt) f.georef.crs_wkt = wkt;
-    CPLFree(wkt);
-  }
+  f.georef.geotransform = out_gt;
+  f.georef.crs_wkt = impl_->mercator_wkt;
   f.georef.geographic = false;
   f.georef.has_geotransform = true;
 

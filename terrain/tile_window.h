@@ -5,12 +5,15 @@
 // Policy decisions (tests rely on them):
 //  * Grid: pixel (i, j) of a window over tiles [x0..x1] × [y0..y1] is global pixel
 //    (x0·T − H + i, y0·T − H + j) of the zoom, T the tile size; the same global pixel
-//    gets the same height, to float rounding (≤ 1e-6 relative: window origins differ in
-//    the last bit), in every window that holds it, so tiles are seamless. For that the
-//    transformer is exact (gdalwarp -et 0) and the kernel's scale is fixed per zoom
-//    (warp options XSCALE/YSCALE, from the DEM's centre, with SOURCE_EXTRA padding)
-//    instead of GDAL's per-chunk estimate, which differs between windows when
-//    downsampling with a kernel (0.3–0.7 m seams at z 11 on Big Tujunga without it).
+//    gets the same height, bit for bit, in every window that holds it, so tiles are
+//    seamless. For that the transformer maps global pixels to the DEM the same way in
+//    every window (terrain/zoom_transform.h: PROJ at the nodes of a grid fixed in the
+//    zoom's pixels, bilinear in between, within kNodeTolerancePx = 0.001 source pixels
+//    of the exact transform; where gdalwarp -et 0 runs PROJ per pixel, half a hillshade
+//    tile run's time) and the kernel's scale is fixed per zoom (warp options
+//    XSCALE/YSCALE, from the DEM's centre, with SOURCE_EXTRA padding) instead of GDAL's
+//    per-chunk estimate, which differs between windows when downsampling with a kernel
+//    (0.3–0.7 m seams at z 11 on Big Tujunga without it).
 //  * Resampling: default_resampling(z, native) = cubic at and above the native zoom
 //    (upsampling: cubic interpolates the DEM's samples with continuous slopes, where
 //    bilinear shades as flat facets with a visible DEM grid and cubicspline smooths
@@ -81,12 +84,16 @@ struct TileWindow {
   double max_dy_error() const;
 };
 
-// The warper's settings for one zoom, as gdalwarp arguments (what window() passes to
-// GDALWarp after the -te/-ts of the window): for documentation and tests.
+// The warper's settings for one zoom. arguments() are the equivalent gdalwarp options
+// with the exact transformer (-et 0), after the window's -te/-ts: the reference the
+// tests compare with; window() runs GDAL's warper with the same options and the node
+// grid of node_spacing global pixels instead of -et 0.
 struct WarpSettings {
   Resampling resampling = Resampling::Cubic;
   double xscale = 1.0, yscale = 1.0;  // destination pixels per source pixel, ≤ 1
   int source_extra = 0;               // source pixels read beyond the kernel's estimate
+  int node_spacing = 1;               // global pixels between exact transforms (zoom_transform.h)
+  double node_error_bound_px = 0.0;   // its bilinear error bound, source pixels
   std::vector<std::string> arguments() const;  // -t_srs EPSG:3857 -r … -et 0 -wo …
 };
 

@@ -369,6 +369,48 @@ TEST_F(Tiles, KilledRunResumedEqualsAnUninterruptedOne) {
   EXPECT_TRUE(folder(part) == folder(out.file("whole")));
 }
 
+TEST_F(Tiles, ResumeWithOtherOptionsFailsInOneLineAndChangesNothing) {
+  for (const std::string name : {"folder", "t.mbtiles", "t.pmtiles"}) {
+    SCOPED_TRACE(name);
+    ScratchDir out;
+    const std::string path = out.file(name);
+    tiles("-o " + path + " -p terrain-rgb --zoom 12");
+    const auto before = folder(out.path());  // every file: the archive, hidden ones too
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"-p terrain-rgb --zoom 11-12", "zoom: 12-12 in the archive, 11-12 in this run"},
+        {"-p terrarium --zoom 12", "product: terrain-rgb in the archive, terrarium in this run"},
+        {"-p terrain-rgb --zoom 12 -r bilinear", "resampling: default in the archive, bilinear in this run"},
+    };
+    for (const auto& [args, needle] : cases) {
+      const auto r = run_skylit("tiles " + dem() + " -o " + path + " --resume " + args + " -q", true);
+      EXPECT_NE(r.status, 0) << args;
+      EXPECT_EQ(count_lines(r.out), 1) << r.out;
+      EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
+      EXPECT_TRUE(folder(out.path()) == before) << args << ": a refused resume changed the archive";
+    }
+    // The same options resume (nothing left to do); a folder and PMTiles come out byte
+    // for byte as before (an SQLite file's pages may move).
+    tiles("-o " + path + " --resume -p terrain-rgb --zoom 12");
+    if (name != "t.mbtiles") {
+      EXPECT_TRUE(folder(out.path()) == before);
+    }
+  }
+}
+
+TEST_F(Tiles, ShardsOfDifferentRunsDoNotMerge) {
+  ScratchDir out;
+  tiles("-o " + out.file("s1.pmtiles") + " -p terrain-rgb --zoom 12 --shard 1/2");
+  tiles("-o " + out.file("s2.pmtiles") + " -p terrain-rgb --zoom 11-12 --shard 2/2");
+  const auto r = run_skylit("tiles merge " + out.file("s1.pmtiles") + " " + out.file("s2.pmtiles") + " -o " +
+                                out.file("m.pmtiles") + " -q",
+                            true);
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("made with other options"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("zoom: 12-12 in '"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out.file("m.pmtiles")));
+}
+
 TEST_F(Tiles, AShardWhollyOutsideTheDemWritesNothing) {
   // Luxembourg: 46 % of its grid lies outside the border, so at z 12 some of the 8 blocks
   // hold no valid pixel; with one block per shard those shards have nothing to write.

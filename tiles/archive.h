@@ -54,6 +54,10 @@ struct ArchiveOptions {
   // PMTiles: the largest compressed root directory; the spec's 16 KiB minus the header.
   // Smaller values only serve tests of leaf directories.
   std::size_t pmtiles_max_root_bytes = 16384 - 127;
+  // The run's options (tiles/fingerprint.h): recorded when the archive is opened, so an
+  // interrupted run carries them too; Resume refuses an archive that records others,
+  // before changing anything. Empty: nothing recorded or checked.
+  std::string fingerprint{};
 };
 
 // Not thread-safe: one thread puts at a time (rendering may be parallel, storing is not).

@@ -8,6 +8,7 @@
 
 #include "tiles/archive_kinds.h"
 #include "tiles/file_io.h"
+#include "tiles/fingerprint.h"
 
 namespace skylit::tiles::detail {
 namespace {
@@ -42,7 +43,7 @@ fs::path tile_path(const fs::path& root, const TileId& t, Scheme scheme, TileFor
 void clear_tile_folder(const fs::path& root) {
   for (const auto& e : fs::directory_iterator(root)) {
     const std::string name = e.path().filename().string();
-    const bool ours = name == kMetadataFile || is_temp(e.path()) ||
+    const bool ours = name == kMetadataFile || name == kFingerprintFile || is_temp(e.path()) ||
                       (e.is_directory() && parse_number(name).has_value());
     if (!ours)
       fail(root, "holds '" + name + "', which a tile folder does not; not deleting it");
@@ -69,11 +70,18 @@ class FolderArchive final : public TileArchive {
         case OpenMode::Create:
           fail(root_, "exists (overwrite it, or resume the run that wrote it)", "overwrite");
         case OpenMode::Overwrite: clear_tile_folder(root_); break;
-        case OpenMode::Resume: remove_temporaries(root_); break;
+        case OpenMode::Resume:
+          // Checked before anything is removed; an empty folder is a fresh start.
+          if (!fs::is_empty(root_)) check_resume_fingerprint(root_, stored_fingerprint(), options_.fingerprint);
+          remove_temporaries(root_);
+          break;
       }
     }
     fs::create_directories(root_, ec);
     if (ec) fail(root_, "cannot create the folder: " + ec.message());
+    // Recorded before the first tile, so that a killed run's folder carries it.
+    if (!options_.fingerprint.empty() && !stored_fingerprint())
+      write_file_atomic(root_ / kFingerprintFile, as_bytes(options_.fingerprint), true);
   }
 
   bool has(const TileId& t) const override {
@@ -105,6 +113,13 @@ class FolderArchive final : public TileArchive {
   }
 
  private:
+  std::optional<std::string> stored_fingerprint() const {
+    const fs::path p = root_ / kFingerprintFile;
+    std::error_code ec;
+    if (!fs::is_regular_file(p, ec)) return std::nullopt;
+    return read_file(p);
+  }
+
   fs::path root_;
   ArchiveOptions options_;
   fs::path last_dir_;

@@ -16,6 +16,7 @@
 
 #include "tiles/archive_kinds.h"
 #include "tiles/file_io.h"
+#include "tiles/fingerprint.h"
 #include "tiles/partial_database.h"
 #include "tiles/sqlite_db.h"
 
@@ -72,9 +73,21 @@ void copy_to_partial(const fs::path& out, const fs::path& partial) {
 class MBTilesArchive final : public TileArchive {
  public:
   MBTilesArchive(const fs::path& out, const ArchiveOptions& options)
-      : out_(out), options_(options), db_(prepare_partial(out, options.mode, copy_to_partial)),
+      : out_(out), options_(options),
+        db_(prepare_partial(out, options.mode, copy_to_partial, finished_fingerprint, options.fingerprint)),
         batch_(db_, options.batch_tiles) {
+    const bool fresh = !Statement(db_, "SELECT 1 FROM sqlite_master WHERE name = 'metadata'").step();
+    // Checked before the schema: its PRAGMA writes the header, and a refused resume
+    // must leave the partial's bytes as they were.
+    if (!fresh && options_.mode == OpenMode::Resume && !options_.fingerprint.empty())
+      check_resume_fingerprint(out_, stored_fingerprint(), options_.fingerprint);
     db_.exec(kSchema);
+    // A new partial records the options now, so that a killed run's partial carries them.
+    if (!options_.fingerprint.empty() && !stored_fingerprint())
+      Statement(db_, "INSERT INTO metadata (name, value) VALUES (?, ?)")
+          .bind(1, std::string(kFingerprintKey))
+          .bind(2, options_.fingerprint)
+          .run();
     has_.emplace(db_, "SELECT 1 FROM tiles WHERE zoom_level = ? AND tile_column = ? AND tile_row = ?");
     put_.emplace(db_,
                  "INSERT OR REPLACE INTO tiles (zoom_level, tile_column, tile_row, tile_data) "
@@ -101,6 +114,7 @@ class MBTilesArchive final : public TileArchive {
     if (finished_) fail(out_, "finished twice");
     check_metadata(out_, m, options_);
     batch_.commit();
+    // The partial's fingerprint row goes with the rest: the finished metadata has its own.
     db_.exec("BEGIN; DELETE FROM metadata;");
     write_metadata(m);
     db_.exec("COMMIT");
@@ -115,6 +129,16 @@ class MBTilesArchive final : public TileArchive {
   }
 
  private:
+  static std::optional<std::string> finished_fingerprint(const fs::path& out) {
+    return open_mbtiles_reader(out)->metadata().fingerprint;
+  }
+
+  std::optional<std::string> stored_fingerprint() {
+    Statement get(db_, "SELECT value FROM metadata WHERE name = ?");
+    get.bind(1, std::string(kFingerprintKey));
+    return get.step() ? std::optional(get.column_text(0)) : std::nullopt;
+  }
+
   void write_metadata(const TileMetadata& m) {
     Statement row(db_, "INSERT INTO metadata (name, value) VALUES (?, ?)");
     const auto add = [&](const std::string& name, const std::string& value) {
@@ -131,6 +155,7 @@ class MBTilesArchive final : public TileArchive {
     if (m.description) add("description", *m.description);
     if (m.attribution) add("attribution", *m.attribution);
     if (m.type) add("type", *m.type);
+    if (m.fingerprint) add(kFingerprintKey, *m.fingerprint);
   }
 
   static Statement& bind(Statement& s, const TileId& t) {
@@ -164,6 +189,7 @@ class MBTilesReader final : public TileReader {
       else if (key == "description") m_.description = value;
       else if (key == "attribution") m_.attribution = value;
       else if (key == "type") m_.type = value;
+      else if (key == kFingerprintKey) m_.fingerprint = value;
     }
     if (!name || !format) fail(path, "has no name or format in its metadata (not a finished MBTiles)");
     m_.name = *name;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 
+#include "tiles/fingerprint.h"
 #include "tiles/reader.h"
 
 namespace skylit::tiles {
@@ -23,6 +24,13 @@ void merge(const std::vector<std::string>& inputs, const std::string& output,
     if (mi.format != m.format)
       throw TileArchiveError("'" + inputs[i] + "': format " + std::string(format_name(mi.format)) +
                              " differs from '" + inputs[0] + "' (" + std::string(format_name(m.format)) + ")");
+    // Tiles made with other options (zooms, light, DEM, …) must not be mixed; shards of
+    // one run record the same options (the shard is not among them).
+    if (mi.fingerprint != m.fingerprint)
+      throw TileArchiveError("'" + inputs[i] + "': made with other options than '" + inputs[0] + "': " +
+                             fingerprint_difference(m.fingerprint.value_or(""), mi.fingerprint.value_or(""),
+                                                    "'" + inputs[0] + "'", "'" + inputs[i] + "'")
+                                 .value_or("one of them records no options"));
     m.minzoom = std::min(m.minzoom, mi.minzoom);
     m.maxzoom = std::max(m.maxzoom, mi.maxzoom);
     m.bounds = {std::min(m.bounds.west, mi.bounds.west), std::min(m.bounds.south, mi.bounds.south),
@@ -37,6 +45,7 @@ void merge(const std::vector<std::string>& inputs, const std::string& output,
 
   ArchiveOptions out_options = options;
   out_options.format = m.format;
+  out_options.fingerprint = m.fingerprint.value_or("");
   const auto out = open_archive(output, out_options);
   for (const auto& [t, i] : source) {
     if (out->has(t) && options.mode == OpenMode::Resume) continue;

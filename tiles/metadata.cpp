@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "tiles/archive.h"
+#include "tiles/fingerprint.h"
 #include "tiles/pmtiles_format.h"
 
 namespace skylit::tiles {
@@ -64,6 +65,7 @@ std::string metadata_to_json(const TileMetadata& m, std::string_view extra_key,
   if (m.description) j["description"] = *m.description;
   if (m.attribution) j["attribution"] = *m.attribution;
   if (m.type) j["type"] = *m.type;
+  if (m.fingerprint) j[kFingerprintKey] = *m.fingerprint;
   if (!extra_key.empty()) j[std::string(extra_key)] = extra_value;
   return j.dump();  // keys sorted: the same metadata gives the same bytes
 }
@@ -90,6 +92,7 @@ TileMetadata metadata_from_json(std::string_view text, const std::string& source
     if (j.contains("description")) m.description = j["description"].get<std::string>();
     if (j.contains("attribution")) m.attribution = j["attribution"].get<std::string>();
     if (j.contains("type")) m.type = j["type"].get<std::string>();
+    if (j.contains(kFingerprintKey)) m.fingerprint = j[kFingerprintKey].get<std::string>();
     return m;
   } catch (const json::exception& e) {
     throw TileArchiveError("'" + source + "': bad metadata: " + e.what());

@@ -34,6 +34,8 @@ struct TileMetadata {
   int minzoom = 0, maxzoom = 0;
   std::optional<std::string> description, attribution;
   std::optional<std::string> type;  // "overlay" or "baselayer"
+  // The options the tiles were made with (tiles/fingerprint.h), when a skylit run wrote them.
+  std::optional<std::string> fingerprint;
   friend bool operator==(const TileMetadata&, const TileMetadata&) = default;
 };
 

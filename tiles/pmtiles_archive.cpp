@@ -14,6 +14,7 @@
 
 #include "tiles/archive_kinds.h"
 #include "tiles/file_io.h"
+#include "tiles/fingerprint.h"
 #include "tiles/partial_database.h"
 #include "tiles/pmtiles_format.h"
 #include "tiles/sqlite_db.h"
@@ -24,8 +25,21 @@ namespace {
 namespace fs = std::filesystem;
 using pmtiles::Entry;
 
+// run: the run's options (tiles/fingerprint.h), one row at most.
 constexpr const char* kSchema =
-    "CREATE TABLE IF NOT EXISTS staged (tile_id integer PRIMARY KEY, data blob NOT NULL)";
+    "CREATE TABLE IF NOT EXISTS staged (tile_id integer PRIMARY KEY, data blob NOT NULL);"
+    "CREATE TABLE IF NOT EXISTS run (fingerprint text NOT NULL);";
+
+// nullopt also for a staging database that predates the table.
+std::optional<std::string> staged_fingerprint(Database& db) {
+  if (!Statement(db, "SELECT 1 FROM sqlite_master WHERE name = 'run'").step()) return std::nullopt;
+  Statement get(db, "SELECT fingerprint FROM run");
+  return get.step() ? std::optional(get.column_text(0)) : std::nullopt;
+}
+
+std::optional<std::string> finished_fingerprint(const fs::path& out) {
+  return open_pmtiles_reader(out)->metadata().fingerprint;
+}
 
 std::uint64_t fnv1a(std::string_view s) {  // content key for deduplication (bytes compared too)
   std::uint64_t h = 14695981039346656037ull;
@@ -43,6 +57,8 @@ void import_archive(const fs::path& out, const fs::path& staging) {
     Database db(temp);
     db.exec(kSchema);
     db.exec("BEGIN");
+    if (const auto& fp = reader->metadata().fingerprint)
+      Statement(db, "INSERT INTO run (fingerprint) VALUES (?)").bind(1, *fp).run();
     Statement put(db, "INSERT INTO staged (tile_id, data) VALUES (?, ?)");
     for (const auto& t : reader->tiles()) {
       const std::string bytes = *reader->get(t);
@@ -58,9 +74,17 @@ void import_archive(const fs::path& out, const fs::path& staging) {
 class PMTilesArchive final : public TileArchive {
  public:
   PMTilesArchive(const fs::path& out, const ArchiveOptions& options)
-      : out_(out), options_(options), db_(prepare_partial(out, options.mode, import_archive)),
+      : out_(out), options_(options),
+        db_(prepare_partial(out, options.mode, import_archive, finished_fingerprint, options.fingerprint)),
         batch_(db_, options.batch_tiles) {
+    const bool fresh = !Statement(db_, "SELECT 1 FROM sqlite_master WHERE name = 'staged'").step();
+    // Checked before the schema, so that a refused resume leaves the staging as it was.
+    if (!fresh && options_.mode == OpenMode::Resume && !options_.fingerprint.empty())
+      check_resume_fingerprint(out_, staged_fingerprint(db_), options_.fingerprint);
     db_.exec(kSchema);
+    // A new staging records the options now, so that a killed run's staging carries them.
+    if (!options_.fingerprint.empty() && !staged_fingerprint(db_))
+      Statement(db_, "INSERT INTO run (fingerprint) VALUES (?)").bind(1, options_.fingerprint).run();
     has_.emplace(db_, "SELECT 1 FROM staged WHERE tile_id = ?");
     put_.emplace(db_, "INSERT OR REPLACE INTO staged (tile_id, data) VALUES (?, ?)");
   }

@@ -14,6 +14,7 @@
 #include "app/common/lighting_args.h"
 #include "app/shade/hillshade_args.h"
 #include "app/tiles/merge_cmd.h"
+#include "app/tiles/run_fingerprint.h"
 #include "app/tiles/tile_plan.h"
 #include "app/tiles/tile_run.h"
 #include "app/tiles/web_viewer.h"
@@ -137,6 +138,7 @@ int run_tiles(const TilesArgs& a) {
   job.format = format;
   job.tile_size = a.tile_size;
   job.quiet = a.quiet;
+  job.threads = a.threads;
   choose_product(a, job);
   if (!a.resampling.empty()) {
     job.resampling = terrain::parse_resampling(a.resampling);
@@ -187,12 +189,13 @@ int run_tiles(const TilesArgs& a) {
     });
     if (const auto why = renderer->lacks(*job.product, job.options)) throw std::invalid_argument(*why);
   }
+  const bool horizons = job.product && !shading::traits(*job.product).local;  // else no halo to report
   if (!a.quiet) {
     std::cerr << "skylit: zooms " << zooms.min << "-" << zooms.max << " (native " << source.native_zoom(a.tile_size)
               << "), " << mine.size() << " of " << all.size() << " window blocks (shard " << shard.index << "/"
-              << shard.count << ")" << (job.product ? "; halo and horizon distance:" : "");
+              << shard.count << ")" << (horizons ? "; halo and horizon distance:" : "");
     for (const ZoomPlan& p : plans)
-      if (job.product) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
+      if (horizons) std::cerr << " z" << p.z << " " << p.halo << " px " << std::lround(p.max_distance_m) << " m;";
     std::cerr << "\n";
   }
 
@@ -205,6 +208,9 @@ int run_tiles(const TilesArgs& a) {
   meta.minzoom = zooms.min;
   meta.maxzoom = zooms.max;
   meta.description = "skylit tiles -p " + a.product;
+  RunOptions run{a.inputs, a.product, a.quality, a.resampling, a.light.tone, request, zooms, a.tile_size,
+                 format, a.tms, plans};
+  meta.fingerprint = archive_options.fingerprint = run_fingerprint(run);
   st::validate(meta);
 
   LazyArchive archive(a.output, archive_options);
@@ -261,7 +267,7 @@ void add_tiles_command(CLI::App& root, Action& run) {
                        "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z (place: the "
                        "DEM's centre, or --lat/--lon); one time, not a series");
   cmd->add_option("--name", a->name, "Archive name in its metadata (default: the DEM's file name and the product)");
-  cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer and the tile encoder (0: all cores)")->capture_default_str();
   cmd->add_option("-w,--webviewer", a->webviewer,
                   "leaflet: an index.html showing the tiles on a Leaflet map (beside a .pmtiles file, inside a "
                   "folder; Leaflet and pmtiles.js inlined) | none")

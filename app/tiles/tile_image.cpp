@@ -47,7 +47,8 @@ bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect
   return false;
 }
 
-std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba) {
+std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba,
+                        int png_zlevel) {
   using skylit::tiles::TileFormat;
   GDALAllRegister();
   const char* driver_name = format == TileFormat::Png ? "PNG" : format == TileFormat::Webp ? "WEBP" : "JPEG";
@@ -71,7 +72,8 @@ std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::v
   const std::string name = "/vsimem/skylit_tile_" + std::to_string(reinterpret_cast<std::uintptr_t>(&size)) + "." +
                            std::string(skylit::tiles::format_name(format));
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
-  std::vector<const char*> options = {"WORLDFILE=NO"};
+  const std::string zlevel = "ZLEVEL=" + std::to_string(png_zlevel);
+  std::vector<const char*> options = {"WORLDFILE=NO", zlevel.c_str()};
   // Lossless, and EXACT: libwebp would otherwise recolour transparent pixels, where DEM
   // encodings keep the filled height's code (terrain/dem_tile_encoding.h). QUALITY is
   // the effort when lossless.

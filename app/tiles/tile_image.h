@@ -34,7 +34,15 @@ bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect
 // stamp). PNG and WebP are lossless with alpha (WebP: libwebp's exact lossless mode, so a
 // tile decodes to the PNG's pixels, RGB under alpha 0 included); JPEG has no alpha: transparent pixels become white, the
 // rest is compressed at quality 90 (for opaque base maps).
-std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba);
+// png_zlevel: zlib's level for PNG (ignored by the other formats).
+std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba,
+                        int png_zlevel);
+// zlib levels, measured on Big Tujunga z 10–13 (85 tiles, docs/performance.md, session 12):
+// shaded relief compresses to within 0.4 % of level 6's bytes at level 3 in 0.39× the
+// time; Terrain-RGB grows 9.5 % at level 3, bytes every client downloads, so the DEM
+// encodings keep zlib's default.
+inline constexpr int kShadedPngZlevel = 3;
+inline constexpr int kDemPngZlevel = 6;
 // Background of transparent pixels in JPEG tiles.
 inline constexpr std::uint8_t kJpegBackground = 255;
 

@@ -1,7 +1,12 @@
 #include "app/tiles/tile_run.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "app/tiles/tile_image.h"
 #include "app/tiles/tile_progress.h"
@@ -13,6 +18,43 @@ const ZoomPlan& plan_of(const std::vector<ZoomPlan>& plans, int z) {
   const auto it = std::find_if(plans.begin(), plans.end(), [z](const ZoomPlan& p) { return p.z == z; });
   if (it == plans.end()) throw std::logic_error("tiles: no plan for zoom " + std::to_string(z));
   return *it;
+}
+
+// f(0) … f(n − 1) on up to `threads` threads (0: all cores); the first exception wins.
+void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& f) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t workers = std::min<std::size_t>(n, threads == 0 ? cores : threads);
+  if (workers <= 1) {
+    for (std::size_t k = 0; k < n; ++k) f(k);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const auto work = [&] {
+    for (std::size_t k; (k = next++) < n;) try {
+        f(k);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+// The halo a block's window needs: the horizons' (plan.halo) for products that search
+// them; one pixel for the 3×3-window products (hillshade: gdaldem's kernel reads one
+// neighbour each way, and a pixel's height is the same in every window, so its tiles
+// are the same bytes as with the horizon halo, at up to half the warped pixels at
+// z 13); none for the DEM encodings, which read no neighbours.
+int window_halo(const TileJob& job, const ZoomPlan& plan) {
+  constexpr int kLocalProductHalo = 1;
+  if (!job.product) return 0;
+  return shading::traits(*job.product).local ? kLocalProductHalo : plan.halo;
 }
 
 std::vector<terrain::TileId> tiles_of(const terrain::TileRange& r) {
@@ -45,7 +87,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     const ZoomPlan& plan = plan_of(plans, b.z);
     terrain::TileWindowOptions wo;
     wo.tile_size = job.tile_size;
-    wo.halo = job.product ? plan.halo : 0;  // DEM encodings read no neighbours
+    wo.halo = window_halo(job, plan);
     wo.resampling = job.resampling;
     // Outside the DEM (transparent in the tiles) only the heights next to its edge matter,
     // as near blockers: the nearest valid height, O(N), where the smooth Laplace fill took
@@ -65,17 +107,23 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
       renderer->set_options(opt);
       bands = renderer->frame(*job.product, {opt.lighting, {}, std::nullopt});
     }
-    const std::size_t bytes = static_cast<std::size_t>(job.tile_size) * job.tile_size * 4;
-    for (const auto& t : todo) {
-      const terrain::PixelRect rect = window.tile_rect(t);
-      if (!any_valid(window.field, rect)) {
+    // Cutting and compressing the tiles (zlib: a third of a hillshade run) in parallel;
+    // the archive gets them in the block's order, as a serial run would.
+    std::vector<std::optional<std::string>> encoded(todo.size());
+    parallel_for(todo.size(), job.threads, [&](std::size_t k) {
+      const terrain::PixelRect rect = window.tile_rect(todo[k]);
+      if (!any_valid(window.field, rect)) return;
+      std::vector<std::uint8_t> rgba(static_cast<std::size_t>(job.tile_size) * job.tile_size * 4);
+      if (bands) rgba = product_tile_rgba(*job.product, *bands, window.field, rect);
+      else terrain::encode_dem_tile(*job.encoding, window.field, rect, rgba);
+      encoded[k] = encode_tile(job.format, job.tile_size, rgba, job.encoding ? kDemPngZlevel : kShadedPngZlevel);
+    });
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+      if (!encoded[k]) {
         ++n.empty;
         continue;
       }
-      std::vector<std::uint8_t> rgba(bytes);
-      if (bands) rgba = product_tile_rgba(*job.product, *bands, window.field, rect);
-      else terrain::encode_dem_tile(*job.encoding, window.field, rect, rgba);
-      archive.put(t, skylit::tiles::as_bytes(encode_tile(job.format, job.tile_size, rgba)));
+      archive.put(todo[k], skylit::tiles::as_bytes(*encoded[k]));
       ++n.written;
     }
     progress.update(done());

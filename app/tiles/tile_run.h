@@ -22,6 +22,7 @@ struct TileJob {
   shading::ProductOptions options;  // max_distance_m is set per zoom from its plan
   std::optional<terrain::DemEncoding> encoding;
   skylit::tiles::TileFormat format = skylit::tiles::TileFormat::Png;
+  unsigned threads = 0;  // tile encoding threads (0: all cores); the renderer's are options.threads
   bool quiet = false;
 };
 

@@ -2,6 +2,7 @@
 // fill voids, attach metric spacing.
 #include "terrain/dem_reader.h"
 
+#include <cpl_conv.h>
 #include <gdal_utils.h>
 #include <ogr_spatialref.h>
 
@@ -411,6 +412,11 @@ DemInfo inspect_dem(const std::vector<std::string>& paths) {
   if (files.size() > 1) info.bands -= 1;  // the mosaic's alpha band is ours, not the data's
   info.files = std::move(files);
   return info;
+}
+
+void cap_gdal_cache_for_streaming() {
+  constexpr long long kStreamingCacheBytes = 256LL << 20;
+  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kStreamingCacheBytes);
 }
 
 DemInfo inspect_dem(const std::string& path) { return inspect_dem(std::vector<std::string>{path}); }

@@ -98,6 +98,11 @@ DemInfo inspect_dem(const std::vector<std::string>& paths);
 // mask is unchanged. Needs at least one valid texel (throws DemError otherwise).
 void fill_voids(HeightField& field, VoidFill fill);
 
+// Caps GDAL's block cache at 256 MiB unless GDAL_CACHEMAX is set, for runs that read a
+// large DEM once (in blocks, or whole for tiles): GDAL's default, 5 % of RAM, would fill
+// with blocks that are never read again and raise the peak memory by as much.
+void cap_gdal_cache_for_streaming();
+
 // Geographic DEMs reaching nearer a pole than this are refused with a clear error.
 inline constexpr double kMaxGeographicLatitudeDeg = 89.0;
 

@@ -150,18 +150,25 @@ TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_uni
   std::array<double, 6> gt = dem.georef.geotransform;
   if (ds.SetGeoTransform(gt.data()) != CE_None || ds.SetProjection(dem.georef.crs_wkt.c_str()) != CE_None)
     throw DemError("cannot georeference the in-memory DEM copy: " + capture.failure());
-  std::vector<float> values(dem.heights);
-  bool voids = false;
-  for (std::size_t k = 0; k < n; ++k)
-    if (!dem.valid[k]) {
-      values[k] = std::numeric_limits<float>::quiet_NaN();
-      voids = true;
-    }
+  const bool voids = std::find(dem.valid.begin(), dem.valid.end(), 0) != dem.valid.end();
   GDALRasterBand& band = *ds.GetRasterBand(1);
   if (voids) band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
   impl_->voids = voids;
-  if (band.RasterIO(GF_Write, 0, 0, dem.width, dem.height, values.data(), dem.width, dem.height, GDT_Float32, 0, 0,
-                    nullptr) != CE_None)
+  // In strips of rows, NaN at voids: a whole copy of the heights would be 4 B a texel
+  // more at the peak (1 GiB for 16384²).
+  const int strip = std::max(1, (1 << 16) / dem.width);
+  std::vector<float> values;
+  bool written = true;
+  for (int j0 = 0; j0 < dem.height && written; j0 += strip) {
+    const int rows = std::min(strip, dem.height - j0);
+    const std::size_t first = static_cast<std::size_t>(j0) * dem.width, count = static_cast<std::size_t>(rows) * dem.width;
+    values.assign(dem.heights.begin() + first, dem.heights.begin() + first + count);
+    for (std::size_t k = 0; k < count; ++k)
+      if (!dem.valid[first + k]) values[k] = std::numeric_limits<float>::quiet_NaN();
+    written = band.RasterIO(GF_Write, 0, j0, dem.width, rows, values.data(), dem.width, rows, GDT_Float32, 0, 0,
+                            nullptr) == CE_None;
+  }
+  if (!written)
     throw DemError("cannot fill the in-memory DEM copy: " + capture.failure());
 
   // The curvature over the DEM's box widened by its size on every side: windows reach

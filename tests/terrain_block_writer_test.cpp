@@ -21,18 +21,7 @@ using skylit::terrain::RasterWriteError;
 using skylit::terrain::RasterWriteOptions;
 using skylit::terrain::testing::ScratchDir;
 
-GeoReference utm() {
-  GeoReference g;
-  g.has_geotransform = true;
-  g.geotransform = {500000, 30, 0, 4000000, 0, -30};
-  OGRSpatialReference srs;
-  srs.importFromEPSG(32611);
-  char* wkt = nullptr;
-  srs.exportToWkt(&wkt);
-  g.crs_wkt = wkt;
-  CPLFree(wkt);
-  return g;
-}
+GeoReference utm() { return skylit::terrain::testing::utm_georef(); }
 
 // Value of band b at (i, j): distinct everywhere, so a misplaced block shows.
 float value(int b, int i, int j) { return static_cast<float>(b * 1e6 + j * 1000 + i); }

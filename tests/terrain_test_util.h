@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "terrain/height_field.h"
+
 // Skips the test when `missing` (what it needs and lacks; "" when nothing) is not empty,
 // but fails it where CI is set: CI runs every test. A macro, as GTEST_SKIP and FAIL
 // return from the test body.
@@ -123,6 +125,20 @@ inline std::string make_crs_less_ramp(const std::string& path) {
   s.epsg.reset();
   s.set_geotransform = false;
   return make_raster(path, s);
+}
+
+// The georeference of RasterSpec's default grid: 30 m UTM 11N texels from (500000, 4000000).
+inline GeoReference utm_georef() {
+  GeoReference g;
+  g.has_geotransform = true;
+  g.geotransform = {500000, 30, 0, 4000000, 0, -30};
+  OGRSpatialReference srs;
+  srs.importFromEPSG(32611);
+  char* wkt = nullptr;
+  srs.exportToWkt(&wkt);
+  g.crs_wkt = wkt;
+  CPLFree(wkt);
+  return g;
 }
 
 inline std::string shared_dem(const std::string& name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }

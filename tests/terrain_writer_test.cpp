@@ -14,17 +14,7 @@ namespace {
 
 using testing::ScratchDir;
 
-GeoReference utm_georef() {
-  GeoReference g;
-  g.geotransform = {500000, 30, 0, 4000000, 0, -30};
-  OGRSpatialReference srs;
-  srs.importFromEPSG(32611);
-  char* wkt = nullptr;
-  srs.exportToWkt(&wkt);
-  g.crs_wkt = wkt;
-  CPLFree(wkt);
-  return g;
-}
+using testing::utm_georef;
 
 struct Opened {
   GDALDataset* ds;

@@ -5,9 +5,6 @@
 #include "shading/horizon/halo.h"
 #include "terrain/block_raster_writer.h"
 
-#include <cpl_conv.h>
-#include <gdal.h>
-
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -17,10 +14,6 @@
 
 namespace skylit::app::shade {
 namespace {
-
-// GDAL's block cache while blocks stream through it (unless GDAL_CACHEMAX is set): its
-// default, 5 % of RAM, would otherwise fill with the input's and the output's blocks.
-constexpr long long kBlockedGdalCacheBytes = 256LL << 20;
 
 std::string size_text(int w, int h) { return std::to_string(w) + "×" + std::to_string(h); }
 
@@ -107,7 +100,7 @@ void run_blocked_shade(const BlockedShade& job, const BlockPlan& plan, const ter
   if (dem.georef.has_geotransform && (gt[1] < 0.0 || gt[5] > 0.0))
     throw std::invalid_argument("blocks need a north-up DEM with columns growing east: warp it first "
                                 "(gdalwarp DEM north_up.tif)");
-  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kBlockedGdalCacheBytes);
+  terrain::cap_gdal_cache_for_streaming();
   if (!job.quiet)
     std::cerr << "skylit: " << plan.blocks.size() << " block" << (plan.blocks.size() > 1 ? "s" : "") << " of up to "
               << plan.core << "×" << plan.core << " texels with a halo of " << plan.halo << "\n";

@@ -110,6 +110,7 @@ void choose_product(const TilesArgs& a, TileJob& job) {
 
 terrain::HeightField read_input(const TilesArgs& a) {
   if (a.inputs.empty()) throw std::invalid_argument("no DEM given");
+  terrain::cap_gdal_cache_for_streaming();
   auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front()) : terrain::read_dem(a.inputs);
   if (!a.quiet)
     for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";

@@ -13,6 +13,14 @@ GDALDataType gdal_type(BlockRasterWriter::Sample s) {
   return s == BlockRasterWriter::Sample::Byte ? GDT_Byte : GDT_Float32;
 }
 
+// A write failure's message: a full disk said plainly (GDAL's last message is often the
+// TIFF layer's "write error at scanline …" after the system's "No space left").
+std::string write_failure(const detail::GdalErrorCapture& capture) {
+  for (const std::string& f : capture.failures())
+    if (f.find("No space left") != std::string::npos) return "the disk is full (No space left on device)";
+  return capture.failure("GDAL write error");
+}
+
 int CPL_STDCALL progress_trampoline(double done, const char*, void* user) {
   return (*static_cast<const std::function<bool(double)>*>(user))(done) ? TRUE : FALSE;
 }
@@ -66,7 +74,12 @@ BlockRasterWriter::BlockRasterWriter(const std::string& path, const GeoReference
   detail::describe_dataset(*s.ds, path, georef, bands, type, options);
 }
 
-BlockRasterWriter::~BlockRasterWriter() = default;
+BlockRasterWriter::~BlockRasterWriter() {
+  if (state_ && state_->ds) {
+    detail::GdalErrorCapture abandoned;  // an unfinished file's close errors (a full disk) are moot
+    state_->ds.reset();
+  }
+}
 
 void BlockRasterWriter::write(const PixelRect& rect, std::span<const float> data) {
   write_any(rect, data.data(), data.size(), Sample::Float32);
@@ -90,9 +103,9 @@ void BlockRasterWriter::write_any(const PixelRect& rect, const void* data, std::
   if (s.ds->RasterIO(GF_Write, rect.x0, rect.y0, rect.width, rect.height, const_cast<void*>(data), rect.width,
                      rect.height, type, s.bands, nullptr, size, size * rect.width,
                      size * rect.width * rect.height, nullptr) != CE_None)
-    fail_write(s.path, capture.failure("GDAL write error (is the disk full?)"));
+    fail_write(s.path, write_failure(capture));
   s.ds->FlushCache();  // a full disk fails here, at this block, not at finish()
-  if (capture.has_failure()) fail_write(s.path, capture.failure("GDAL write error (is the disk full?)"));
+  if (capture.has_failure()) fail_write(s.path, write_failure(capture));
 }
 
 void BlockRasterWriter::finish() {
@@ -107,12 +120,12 @@ void BlockRasterWriter::finish() {
                                         s.creation_options.get(),
                                         has_progress ? progress_trampoline : GDALDummyProgress,
                                         has_progress ? &s.options.progress : nullptr));
-    if (!out) fail_write(s.path, capture.failure("the driver could not write the file"));
+    if (!out) fail_write(s.path, capture.has_failure() ? write_failure(capture) : "the driver could not write the file");
     out.reset();
     s.ds.reset();
     VSIUnlink(s.staging.file("stage.tif").c_str());
   }
-  if (capture.has_failure()) fail_write(s.path, capture.failure("GDAL write error (is the disk full?)"));
+  if (capture.has_failure()) fail_write(s.path, write_failure(capture));
   s.staging.publish();
 }
 

@@ -25,6 +25,7 @@ class GdalErrorCapture {
   // The last failure message, or `fallback` when GDAL said nothing.
   std::string failure(const std::string& fallback = "unknown GDAL error") const;
   const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::vector<std::string>& failures() const { return failures_; }
 
  private:
   static void CPL_STDCALL handler(CPLErr cls, CPLErrorNum num, const char* msg);

@@ -115,6 +115,19 @@ TEST(BlockedShade, CogOutputGetsOverviews) {
   EXPECT_EQ(dir.listing(), (std::vector<std::string>{"cog.tif", "scene600.tif", "whole.tif"}));
 }
 
+TEST(BlockedShade, AFullDiskFailsInOneLineAndLeavesNothing) {
+  ScratchDir dir;
+  const std::string dem = scene(dir, 300);
+  skylit::terrain::testing::Tmpfs disk(dir.path() / "disk", "128k");  // under the 352 KiB Float32 svf
+  SKYLIT_REQUIRE(disk.mounted() ? "" : "cannot mount a tmpfs here (needs root)");
+  const std::string out = (dir.path() / "disk" / "svf.tif").string();
+  const auto r = run_skylit("shade " + dem + " -p svf --levels none --max-distance 600 --block-size 64 -q -o " + out, true);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(skylit::testing::count_lines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("the disk is full"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path() / "disk"));
+}
+
 TEST(BlockedShade, BadRequestsFailCleanly) {
   ScratchDir dir;
   const std::string dem = scene(dir, 64);

@@ -3,6 +3,7 @@
 
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
+#include <sys/mount.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -126,6 +127,29 @@ inline std::string make_crs_less_ramp(const std::string& path) {
   s.set_geotransform = false;
   return make_raster(path, s);
 }
+
+// A tmpfs of `size` ("64k") mounted at `at` for full-disk tests, unmounted at the end.
+// Mounting needs root (CAP_SYS_ADMIN): check mounted() with SKYLIT_REQUIRE.
+class Tmpfs {
+ public:
+  Tmpfs(const fs::path& at, const std::string& size) : at_(at) {
+    fs::create_directories(at);
+    mounted_ = ::mount("tmpfs", at.c_str(), "tmpfs", 0, ("size=" + size).c_str()) == 0;
+  }
+  ~Tmpfs() {
+    if (mounted_) ::umount2(at_.c_str(), MNT_DETACH);
+  }
+  Tmpfs(const Tmpfs&) = delete;
+  Tmpfs& operator=(const Tmpfs&) = delete;
+  bool mounted() const { return mounted_; }
+  bool resize(const std::string& size) {
+    return ::mount("tmpfs", at_.c_str(), "tmpfs", MS_REMOUNT, ("size=" + size).c_str()) == 0;
+  }
+
+ private:
+  fs::path at_;
+  bool mounted_ = false;
+};
 
 // The georeference of RasterSpec's default grid: 30 m UTM 11N texels from (500000, 4000000).
 inline GeoReference utm_georef() {

@@ -2,7 +2,6 @@
 // was, the run resumable: after space is freed, a resumed run ends complete. Mounting
 // needs root (CAP_SYS_ADMIN); elsewhere the tests skip, and fail where CI is set.
 #include <gtest/gtest.h>
-#include <sys/mount.h>
 
 #include <cstdlib>
 
@@ -16,24 +15,7 @@ namespace {
 
 using namespace testing;
 
-class Tmpfs {
- public:
-  Tmpfs(const fs::path& at, const std::string& size) : at_(at) {
-    fs::create_directories(at);
-    mounted_ = ::mount("tmpfs", at.c_str(), "tmpfs", 0, ("size=" + size).c_str()) == 0;
-  }
-  ~Tmpfs() {
-    if (mounted_) ::umount2(at_.c_str(), MNT_DETACH);
-  }
-  bool mounted() const { return mounted_; }
-  bool resize(const std::string& size) {
-    return ::mount("tmpfs", at_.c_str(), "tmpfs", MS_REMOUNT, ("size=" + size).c_str()) == 0;
-  }
-
- private:
-  fs::path at_;
-  bool mounted_ = false;
-};
+using terrain::testing::Tmpfs;
 
 // Incompressible 4 KiB tiles: the tmpfs fills after a known handful.
 Content noise_tiles(int z, std::size_t count) {

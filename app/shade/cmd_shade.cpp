@@ -129,6 +129,19 @@ std::unique_ptr<shading::Renderer> make_shade_renderer(gpu::Backend backend, boo
   }
 }
 
+// How the DEM is read: -b, --nodata, the scales and z (1 for local products, which
+// apply z inside their formula as gdaldem does).
+terrain::DemReadOptions dem_read_options(const ShadeArgs& a, double z_factor) {
+  terrain::DemReadOptions opt;
+  opt.scale = a.scale;
+  opt.xscale = a.xscale;
+  opt.yscale = a.yscale;
+  opt.z_factor = z_factor;
+  opt.band = a.band;
+  opt.nodata = a.nodata;
+  return opt;
+}
+
 terrain::HeightField load_input(const ShadeArgs& a, double z_factor) {
   if (a.synthetic) {
     if (!a.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
@@ -138,13 +151,7 @@ terrain::HeightField load_input(const ShadeArgs& a, double z_factor) {
     return terrain::make_synthetic_terrain(opt);
   }
   if (a.inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
-  terrain::DemReadOptions opt;
-  opt.scale = a.scale;
-  opt.xscale = a.xscale;
-  opt.yscale = a.yscale;
-  opt.z_factor = z_factor;
-  opt.band = a.band;
-  opt.nodata = a.nodata;
+  const terrain::DemReadOptions opt = dem_read_options(a, z_factor);
   auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), opt) : terrain::read_dem(a.inputs, opt);
   if (!a.quiet)
     for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
@@ -293,13 +300,7 @@ std::optional<int> run_shade_in_blocks(const ShadeArgs& a, shading::Product prod
     return std::nullopt;
   }
   if (a.inputs.empty()) return std::nullopt;  // load_input says what is missing
-  terrain::DemReadOptions read;
-  read.scale = a.scale;
-  read.xscale = a.xscale;
-  read.yscale = a.yscale;
-  read.z_factor = shading::traits(product).local ? 1.0 : a.z_factor;
-  read.band = a.band;
-  read.nodata = a.nodata;
+  const terrain::DemReadOptions read = dem_read_options(a, shading::traits(product).local ? 1.0 : a.z_factor);
   const terrain::DemInfo dem = terrain::inspect_dem(a.inputs);
   std::vector<std::string> warnings;  // the blocks' reads report them
   terrain::MetricSpacing spacing;

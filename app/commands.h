@@ -41,3 +41,9 @@ void add_track_command(CLI::App& root, Action& run);
 void add_spheres_fit_command(CLI::App& root, Action& run);
 
 }  // namespace skylit::app::flight
+
+namespace skylit::app::view {  // app/view/: the viewer's frames
+
+void add_render_command(CLI::App& root, Action& run);
+
+}  // namespace skylit::app::view

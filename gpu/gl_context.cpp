@@ -228,7 +228,15 @@ HeadlessContext::HeadlessContext(const ContextOptions& options) {
   mVersion = gl_string(GL_VERSION);
 }
 
+HeadlessContext::HeadlessContext(const AdoptCurrentContext& adopt) : mOwned(false), mPlatform(adopt.platform) {
+  mRenderer = gl_string(GL_RENDERER);
+  mVersion = gl_string(GL_VERSION);
+  if (mRenderer.empty() || epoxy_gl_version() < 45)
+    throw std::runtime_error("no OpenGL 4.5 context is current (GL_VERSION '" + mVersion + "')");
+}
+
 HeadlessContext::~HeadlessContext() {
+  if (!mOwned) return;
   if (eglGetCurrentContext() == mContext)
     eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(mDisplay, mContext);
@@ -236,11 +244,13 @@ HeadlessContext::~HeadlessContext() {
 }
 
 void HeadlessContext::make_current() const {
+  if (!mOwned) return;
   if (!eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, mContext))
     throw std::runtime_error("HeadlessContext::make_current: " + egl_error_text());
 }
 
 void HeadlessContext::release_current() const {
+  if (!mOwned) return;
   eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 

@@ -19,6 +19,11 @@ struct ContextOptions {
   EglPlatform platform = EglPlatform::Automatic;
 };
 
+// Tag: use the GL 4.5 context already current on this thread (a window's, made by GLFW).
+struct AdoptCurrentContext {
+  std::string platform = "window";  // what platform() reports
+};
+
 // Owns an EGL display reference and a GL 4.5 core context (with compute shaders), made
 // current on the constructing thread. GL objects (buffers, programs) must be
 // destroyed while their context is current, i.e. before the HeadlessContext.
@@ -27,6 +32,11 @@ class HeadlessContext {
   // Throws std::runtime_error("no OpenGL 4.5 context could be created: …") naming
   // what each platform tried answered.
   explicit HeadlessContext(const ContextOptions& options = {});
+  // Owns nothing: make_current() and release_current() leave the window's context to
+  // its owner, whose thread then draws and computes (one context, so the renderer's
+  // buffers are the viewer's textures). Throws std::runtime_error without a current
+  // GL 4.5 context.
+  explicit HeadlessContext(const AdoptCurrentContext& adopt);
   ~HeadlessContext();
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;
@@ -43,6 +53,7 @@ class HeadlessContext {
  private:
   void* mDisplay = nullptr;  // EGLDisplay
   void* mContext = nullptr;  // EGLContext
+  bool mOwned = true;
   std::string mRenderer, mVersion, mPlatform;
 };
 

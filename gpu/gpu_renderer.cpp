@@ -41,6 +41,10 @@ bool same_pipeline(Product product, const shading::ProductOptions& a, const shad
 
 GpuRenderer::GpuRenderer() : context_(make_context(context_ms_)) {}
 
+GpuRenderer::GpuRenderer(std::unique_ptr<HeadlessContext> context) : context_(std::move(context)) {
+  if (!context_) throw std::invalid_argument("GpuRenderer: no context");
+}
+
 GpuRenderer::~GpuRenderer() {
   context_->make_current();  // GL objects die while their context is current
   cache_.clear();

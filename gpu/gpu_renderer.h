@@ -29,6 +29,8 @@ class GpuRenderer final : public shading::Renderer {
  public:
   // Throws std::runtime_error ("no OpenGL 4.5 context could be created: …", one line).
   GpuRenderer();
+  // On a context of the caller's (a window's: HeadlessContext(AdoptCurrentContext)).
+  explicit GpuRenderer(std::unique_ptr<HeadlessContext> context);
   ~GpuRenderer() override;
 
   std::string description() const override;

@@ -17,6 +17,7 @@ PACKAGES=(
   libsqlite3-dev zlib1g-dev sqlite3   # tiles/: MBTiles, PMTiles staging, gzip; sqlite3 CLI for tests
   clang-16 libclang-rt-16-dev   # libFuzzer for scripts/fuzz.sh (the build itself uses g++)
   chromium                      # headless browser for the tile viewer's test (tests/web)
+  ffmpeg                        # skylit render: video encoding (frames piped to it)
 )
 # tests/web runs on node + npm: Debian's, unless a node is installed already (NodeSource's
 # nodejs ships its own npm and conflicts with Debian's npm package).

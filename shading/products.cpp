@@ -141,13 +141,13 @@ double skyview_from_horizon(std::span<const double> sigma, std::span<const horiz
 
 float srgb_code_value(double linear) {
   const double x = std::clamp(linear, 0.0, 1.0);
-  const double encoded = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
-  return static_cast<float>(1.0 + std::round(254.0 * encoded));
+  const double encoded = x <= kSrgbLinearLimit ? kSrgbLinearSlope * x : kSrgbScale * std::pow(x, 1.0 / kSrgbGamma) - kSrgbOffset;
+  return static_cast<float>(kFirstCode + std::round(kCodeSpan * encoded));
 }
 
 float display_code_value(double linear, ToneCurve tone) {
   if (tone == ToneCurve::Srgb) return srgb_code_value(linear);
-  return static_cast<float>(1.0 + std::round(254.0 * std::clamp(linear, 0.0, 1.0)));
+  return static_cast<float>(kFirstCode + std::round(kCodeSpan * std::clamp(linear, 0.0, 1.0)));
 }
 
 }  // namespace skylit::shading

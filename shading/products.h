@@ -184,6 +184,13 @@ double skyview_from_horizon(std::span<const double> sigma, std::span<const horiz
 // (multiply by Δφ and sum over slices).
 double skyview_slice_integral(double lo, const glm::dvec3& normal, double u_east, double u_north);
 
+// The sRGB transfer curve (IEC 61966-2-1) and the code range of 8-bit products (0 is
+// nodata): here once, for the host and, as generated #defines, the viewer's shaders.
+inline constexpr double kSrgbLinearLimit = 0.0031308;  // linear segment below
+inline constexpr double kSrgbLinearSlope = 12.92;
+inline constexpr double kSrgbScale = 1.055, kSrgbOffset = 0.055, kSrgbGamma = 2.4;
+inline constexpr double kFirstCode = 1.0, kCodeSpan = 254.0;  // codes 1 … 255
+
 // 8-bit sRGB code value (1…255) of a linear radiance after exposure.
 float srgb_code_value(double linear);
 // 8-bit code value (1…255) of a linear display value by `tone`: sRGB, or 1 + 254·x.

@@ -2,8 +2,7 @@
 // shades) as a Float32 GeoTIFF, so other tools — gdaldem in the CLI benchmark, GIS
 // viewers — can read exactly the heights skylit shades.
 #include "app/commands.h"
-
-#include <ogr_spatialref.h>
+#include "app/common/synthetic_scene.h"
 
 #include <filesystem>
 #include <iostream>
@@ -11,7 +10,6 @@
 #include <string>
 
 #include "terrain/raster_writer.h"
-#include "terrain/synthetic.h"
 
 namespace skylit::app::shade {
 namespace {
@@ -24,32 +22,16 @@ struct SceneArgs {
   bool quiet = false;
 };
 
-// The scene's metres need a projected CRS to be read back as metres (a DEM without one
-// needs -s): UTM zone 32N (EPSG:32632), an arbitrary place in the Alps.
-constexpr int kSceneEpsg = 32632;
-constexpr double kSceneEasting = 400000.0, kSceneNorthing = 5200000.0;
-
 int run_scene(const SceneArgs& a) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::exists(a.output, ec) && !a.overwrite)
     throw std::invalid_argument("output '" + a.output + "' exists; pass --overwrite to replace it");
-  terrain::SyntheticOptions opt;
-  opt.width = opt.height = a.size;
-  opt.seed = a.seed;
-  terrain::HeightField field = terrain::make_synthetic_terrain(opt);
-  OGRSpatialReference srs;
-  if (srs.importFromEPSG(kSceneEpsg) != OGRERR_NONE)
-    throw std::runtime_error("GDAL/PROJ cannot build EPSG:" + std::to_string(kSceneEpsg) + " (is proj-data installed?)");
-  char* wkt = nullptr;
-  srs.exportToWkt(&wkt);
-  field.georef.crs_wkt = wkt;
-  CPLFree(wkt);
-  field.georef.geotransform = {kSceneEasting, opt.spacing, 0.0, kSceneNorthing, 0.0, -opt.spacing};
+  const terrain::HeightField field = make_georeferenced_scene(a.size, a.seed);
   terrain::RasterWriteOptions w;
   w.overwrite = a.overwrite;
   terrain::write_height_field(a.output, field, w);
-  if (!a.quiet) std::cerr << "skylit: wrote " << a.output << " (" << a.size << "x" << a.size << ", seed " << a.seed << ")\n";
+  if (!a.quiet) std::cerr << "skylit: wrote " << a.output << " (" << field.width << "x" << field.height << ", seed " << a.seed << ")\n";
   return 0;
 }
 

@@ -5,6 +5,7 @@
 // frame renders (after the DEM is read: a date's frames depend on its place).
 #pragma once
 
+#include "app/common/frame_pattern.h"
 #include "app/shade/shade_output.h"
 #include "shading/products.h"
 #include "shading/sky/time_utc.h"
@@ -14,13 +15,6 @@
 #include <vector>
 
 namespace skylit::app::shade {
-
-// The one %d conversion of `path` ("%d", "%04d", "%4d"), as {position, length}; nullopt
-// without one. Throws std::invalid_argument for any other '%' (write "%%" for a percent
-// sign) or a second %d.
-std::optional<std::pair<std::size_t, std::size_t>> frame_pattern(const std::string& path);
-// `path` with its %d conversion replaced by `frame`.
-std::string frame_path(const std::string& path, int frame);
 
 struct FrameOutputs {
   std::vector<OutputSpec> files;  // one per frame (pattern), or one multi-band file

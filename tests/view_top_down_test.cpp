@@ -1,0 +1,162 @@
+// The viewer's drawing path tied to the verified export: straight down over the field,
+// the frame (terrain mesh, the renderer's `shaded` frame sampled on the GPU, the
+// viewer's own tone map in GLSL) equals the `shaded` raster — the GPU's read back and
+// coded on the host as `skylit shade` writes it, and the CPU reference's — and an
+// aircraft's shadow lands where the sun's ray through it meets the ground. llvmpipe
+// where there is no GPU.
+#include "gpu_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "gpu/gpu_renderer.h"
+#include "shading/lighting.h"
+#include "shading/products.h"
+#include "shading/reference_renderer.h"
+#include "view/offscreen_target.h"
+#include "view/scene_view.h"
+
+namespace skylit::view {
+namespace {
+
+using shading::Product;
+
+using TopDownTest = gpu::testing::GpuTest;
+
+shading::Lighting lighting_at(double azimuth_deg, double elevation_deg, const std::string& sky) {
+  shading::LightingRequest r;
+  r.sun_azimuth_deg = azimuth_deg;
+  r.sun_elevation_deg = elevation_deg;
+  r.sky = sky;
+  return shading::resolve_lighting(r, std::nullopt).lighting;
+}
+
+shading::ProductOptions options(shading::ToneCurve tone) {
+  shading::ProductOptions o;
+  o.march.azimuths = 16;
+  o.shaded.tone = tone;
+  return o;
+}
+
+// The top-down frame of the field-sized viewport, RGB, top row first.
+std::vector<std::uint8_t> top_down(gpu::GpuRenderer& renderer, const terrain::HeightField& f,
+                                   const shading::ProductOptions& o, const shading::FrameInputs& inputs) {
+  SceneView view(renderer, f, o);
+  OffscreenTarget target(f.width, f.height);
+  target.bind();
+  ViewFrame frame;
+  frame.shading = inputs;
+  frame.camera = ortho_nadir_camera(f, 1.0);
+  frame.style.tone = o.shaded.tone;
+  frame.draw_bodies = false;
+  view.draw(frame, f.width, f.height);
+  return target.read_rgb();
+}
+
+struct Difference {
+  double rms = 0.0;
+  int max = 0;
+  int compared = 0;
+};
+
+// Frame codes against a raster's codes (bands: 1 grey or 3), valid texels only.
+Difference compare(const std::vector<std::uint8_t>& rgb, const shading::ProductBands& codes) {
+  Difference d;
+  double sum = 0.0;
+  for (int j = 0; j < codes.height; ++j)
+    for (int i = 0; i < codes.width; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float want = codes.at(std::min(c, codes.bands - 1), i, j);
+        if (std::isnan(want)) continue;
+        const int got = rgb[(static_cast<std::size_t>(j) * codes.width + i) * 3 + c];
+        const int diff = std::abs(got - static_cast<int>(want));
+        sum += diff * diff;
+        d.max = std::max(d.max, diff);
+        ++d.compared;
+      }
+  d.rms = std::sqrt(sum / std::max(d.compared, 1));
+  return d;
+}
+
+shading::ProductBands reference_codes(const terrain::HeightField& f, const shading::ProductOptions& o,
+                                      const shading::FrameInputs& inputs) {
+  shading::ReferenceRenderer reference;
+  reference.set_field(f);
+  reference.set_options(o);
+  return reference.frame(Product::Shaded, inputs);
+}
+
+TEST_F(TopDownTest, UnlitShadedEqualsTheExportRaster) {
+  const terrain::HeightField f = gpu::testing::synthetic_field();
+  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+  gpu::GpuRenderer renderer;
+  const shading::FrameInputs inputs;
+  const std::vector<std::uint8_t> rgb = top_down(renderer, f, o, inputs);
+  renderer.set_field(f);
+  const shading::ProductBands codes = renderer.frame(Product::Shaded, inputs);
+  const Difference vs_gpu = compare(rgb, codes);
+  EXPECT_GT(vs_gpu.compared, f.width * f.height * 3 - 10);
+  EXPECT_LE(vs_gpu.max, 1) << "the same values, coded in GLSL instead of on the host";
+  EXPECT_LT(vs_gpu.rms, 0.1);
+  const Difference vs_reference = compare(rgb, reference_codes(f, o, inputs));
+  EXPECT_LT(vs_reference.rms, 2.0);
+}
+
+TEST_F(TopDownTest, LitColourShadedWithAnAircraftEqualsTheExportRaster) {
+  const terrain::HeightField f = gpu::testing::synthetic_field();
+  const shading::ProductOptions o = options(shading::ToneCurve::Srgb);
+  gpu::GpuRenderer renderer;
+  shading::FrameInputs inputs;
+  inputs.lighting = lighting_at(135.0, 30.0, "preetham");
+  inputs.spheres = {{{45 * 30.0, -40 * 30.0, 2400.0}, 60.0}};
+  const std::vector<std::uint8_t> rgb = top_down(renderer, f, o, inputs);
+  renderer.set_field(f);
+  const shading::ProductBands gpu_codes = renderer.frame(Product::Shaded, inputs);
+  ASSERT_EQ(gpu_codes.bands, 3);
+  const Difference vs_gpu = compare(rgb, gpu_codes);
+  EXPECT_LE(vs_gpu.max, 1);
+  EXPECT_LT(vs_gpu.rms, 0.1);
+  const Difference vs_reference = compare(rgb, reference_codes(f, o, inputs));
+  EXPECT_LT(vs_reference.rms, 2.0);
+}
+
+TEST_F(TopDownTest, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
+  // Flat ground at 0 m, one 40 m sphere 300 m up; sun from azimuth 120°, elevation 35°.
+  terrain::HeightField f(160, 160, 10.0);
+  const double azimuth = 120.0, elevation = 35.0, height = 300.0;
+  const glm::dvec3 centre{80 * 10.0, -80 * 10.0, height};
+  shading::FrameInputs lit;
+  lit.lighting = lighting_at(azimuth, elevation, "uniform");
+  shading::FrameInputs blocked = lit;
+  blocked.spheres = {{centre, 40.0}};
+  gpu::GpuRenderer renderer;
+  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+  const std::vector<std::uint8_t> clear = top_down(renderer, f, o, lit);
+  const std::vector<std::uint8_t> shadowed = top_down(renderer, f, o, blocked);
+
+  // The ground point behind the sphere, away from the sun: centre − h / tan(e) · (sin A, cos A).
+  const double a = azimuth * std::numbers::pi / 180.0, e = elevation * std::numbers::pi / 180.0;
+  const double run = height / std::tan(e);
+  const double want_x = centre.x - run * std::sin(a), want_y = centre.y - run * std::cos(a);
+  double weight = 0.0, sx = 0.0, sy = 0.0;
+  int darkest = 0;
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 0; i < f.width; ++i) {
+      const std::size_t p = (static_cast<std::size_t>(j) * f.width + i) * 3;
+      const int dark = clear[p] - shadowed[p];
+      darkest = std::max(darkest, dark);
+      if (dark <= 0) continue;
+      weight += dark;
+      sx += dark * i * 10.0;
+      sy += dark * -j * 10.0;
+    }
+  ASSERT_GT(darkest, 40) << "a 40 m sphere's umbra takes most of the direct sun";
+  EXPECT_NEAR(sx / weight, want_x, 15.0);
+  EXPECT_NEAR(sy / weight, want_y, 15.0);
+}
+
+}  // namespace
+}  // namespace skylit::view

@@ -1,0 +1,129 @@
+#include "view/scene_view.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "gpu/timer.h"
+
+namespace skylit::view {
+namespace {
+
+double field_diagonal(const terrain::HeightField& f) {
+  return std::hypot(f.width * f.mean_dx(), f.height * f.dy);
+}
+
+glm::dvec2 height_range(const terrain::HeightField& f) {
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  return {*lo, *hi};
+}
+
+bool same_lighting(const std::optional<shading::Lighting>& a, const std::optional<shading::Lighting>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  if (!a) return true;
+  return a->sky == b->sky && a->sun.direction == b->sun.direction && a->sun.dni == b->sun.dni &&
+         a->reference_irradiance == b->reference_irradiance;
+}
+
+}  // namespace
+
+GroundHeight ground_of(const terrain::HeightField& field, double exaggeration) {
+  const double dx = field.mean_dx(), dy = field.dy;
+  return [&field, dx, dy, exaggeration](double x, double y) {
+    const double fi = std::clamp(x / dx, 0.0, field.width - 1.0), fj = std::clamp(-y / dy, 0.0, field.height - 1.0);
+    const int i0 = std::min(static_cast<int>(fi), field.width - 2 < 0 ? 0 : field.width - 2);
+    const int j0 = std::min(static_cast<int>(fj), field.height - 2 < 0 ? 0 : field.height - 2);
+    const int i1 = std::min(i0 + 1, field.width - 1), j1 = std::min(j0 + 1, field.height - 1);
+    const double u = fi - i0, v = fj - j0;
+    const double h = (1 - v) * ((1 - u) * field.at(i0, j0) + u * field.at(i1, j0)) +
+                     v * ((1 - u) * field.at(i0, j1) + u * field.at(i1, j1));
+    return h * exaggeration;
+  };
+}
+
+ViewCamera perspective_camera(const CameraPose& pose, const terrain::HeightField& field, int width, int height,
+                              double exaggeration, std::span<const blockers::Sphere> bodies, double fovy_deg) {
+  const double ground = ground_of(field, exaggeration)(pose.eye.x, pose.eye.y);
+  const double extent = 4.0 * field_diagonal(field) + std::max(0.0, pose.eye.z - ground);
+  double nearest = pose.eye.z - ground;
+  for (const blockers::Sphere& s : bodies)
+    nearest = std::min(nearest, glm::distance(pose.eye, s.centre * glm::dvec3(1.0, 1.0, exaggeration)) - s.radius);
+  const Perspective p = perspective_for(nearest, extent, static_cast<double>(width) / height, fovy_deg);
+  ViewCamera c;
+  c.view = view_matrix(pose);
+  c.proj = projection_matrix(p);
+  c.eye = pose.eye;
+  c.pixels_per_radian = height / (2.0 * std::tan(0.5 * glm::radians(p.fovy_deg)));
+  return c;
+}
+
+ViewCamera ortho_nadir_camera(const terrain::HeightField& field, double exaggeration) {
+  const double dx = field.mean_dx(), dy = field.dy;
+  const glm::dvec2 r = height_range(field) * exaggeration;
+  ViewCamera c;
+  c.proj = ortho_nadir_matrix(-0.5 * dx, (field.width - 0.5) * dx, -(field.height - 0.5) * dy, 0.5 * dy,
+                              r.x - 10.0, r.y + 10.0);
+  c.eye = {0.5 * (field.width - 1) * dx, -0.5 * (field.height - 1) * dy, r.y + 10.0};
+  return c;
+}
+
+SceneView::SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& field,
+                     const shading::ProductOptions& options)
+    : renderer_(renderer), field_(field), terrain_(field) {
+  renderer_.set_field(field);
+  renderer_.set_options(options);
+  renderer_.expect_frames(2);  // many frames: keep the visibility between them
+}
+
+ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool measure) {
+  ViewTimings t;
+  const auto start = std::chrono::steady_clock::now();
+  auto lap = [&, last = start]() mutable {
+    if (measure) glFinish();
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+    return ms;
+  };
+  const gpu::GpuFrame shaded = renderer_.frame_on_gpu(shading::Product::Shaded, frame.shading);
+  t.horizons_reused = renderer_.last_timings().horizons_reused;
+  terrain_.sync(field_);
+  t.shading_ms = lap();
+
+  const bool perspective = frame.camera.pixels_per_radian > 0.0;
+  const bool srgb = frame.style.tone == shading::ToneCurve::Srgb;
+  const glm::dmat4 view_proj = frame.camera.proj * frame.camera.view;
+  glViewport(0, 0, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glClearColor(static_cast<float>(frame.clear.r), static_cast<float>(frame.clear.g), static_cast<float>(frame.clear.b), 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (perspective) {
+    if (!baked_ || !same_lighting(baked_for_, frame.shading.lighting) || baked_scale_ != shaded.display_scale) {
+      baked_ = bake_sky(frame.shading.lighting, shaded.display_scale);
+      baked_for_ = frame.shading.lighting;
+      baked_scale_ = shaded.display_scale;
+      sky_.set(*baked_);
+    }
+    sky_.draw(view_proj, srgb);
+  }
+  t.sky_ms = lap();
+  terrain_.draw(shaded, view_proj, frame.camera.eye, frame.camera.pixels_per_radian, frame.style);
+  t.terrain_nodes = terrain_.last_node_count();
+  t.terrain_ms = lap();
+  if (frame.draw_bodies && perspective && baked_)
+    spheres_.draw(frame.shading.spheres, frame.camera.view, frame.camera.proj, frame.style.exaggeration,
+                  sky_.light(), srgb);
+  t.bodies_ms = lap();
+  t.total_ms = gpu::ms_since(start);
+  return t;
+}
+
+}  // namespace skylit::view

@@ -1,0 +1,81 @@
+// One frame of the viewer, the same for the window and headless `render`: the renderer's
+// `shaded` frame (sun, sky and aircraft per frame; horizons kept while the field and
+// options stay) left on the GPU, then the sky, the terrain coloured by that frame, and
+// the aircraft bodies, drawn into the bound framebuffer of the renderer's context.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "gpu/gpu_renderer.h"
+#include "shading/renderer.h"
+#include "terrain/height_field.h"
+#include "view/camera.h"
+#include "view/sky_draw.h"
+#include "view/sphere_draw.h"
+#include "view/terrain_draw.h"
+
+namespace skylit::view {
+
+// Where the frame is seen from.
+struct ViewCamera {
+  glm::dmat4 view{1.0}, proj{1.0};
+  glm::dvec3 eye{0.0};
+  double pixels_per_radian = 0.0;  // 0: orthographic
+};
+
+// A perspective camera at `pose` for a viewport of width × height; its near plane stays
+// in front of the ground and of `bodies` (the frame's aircraft, drawn z × exaggeration).
+ViewCamera perspective_camera(const CameraPose& pose, const terrain::HeightField& field, int width, int height,
+                              double exaggeration, std::span<const blockers::Sphere> bodies = {},
+                              double fovy_deg = 50.0);
+// Straight down over the field's extent (texel centres ± half a texel): pixel (c, r) of
+// a field-sized viewport is texel (c, r).
+ViewCamera ortho_nadir_camera(const terrain::HeightField& field, double exaggeration);
+
+// Ground height (exaggerated) at field-frame (x, y), bilinear in the heights, clamped to
+// the edges: what keeps cameras above the ground.
+GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
+
+struct ViewFrame {
+  shading::FrameInputs shading;  // the sun and sky, the aircraft's spheres, exposure
+  ViewCamera camera;
+  TerrainStyle style;
+  bool draw_bodies = true;  // the aircraft drawn (the top-down map shows their shadows only)
+  glm::dvec3 clear{0.0};    // behind everything where no sky is drawn (orthographic)
+};
+
+// Where a frame's time went (wall clock, ms; with `measure`, each pass is finished
+// before the next starts).
+struct ViewTimings {
+  double shading_ms = 0.0;  // the renderer's frame (horizons, when not kept, the sun, the spheres)
+  double sky_ms = 0.0, terrain_ms = 0.0, bodies_ms = 0.0, total_ms = 0.0;
+  std::size_t terrain_nodes = 0;
+  bool horizons_reused = false;
+};
+
+class SceneView {
+ public:
+  // The renderer's field must stay alive and resident (renderer.set_field) while the view
+  // draws; `options` are the renderer's (the `shaded` product's horizon and quality).
+  SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& field, const shading::ProductOptions& options);
+
+  // Draws into the framebuffer bound now (viewport width × height).
+  ViewTimings draw(const ViewFrame& frame, int width, int height, bool measure = false);
+
+ private:
+  gpu::GpuRenderer& renderer_;
+  const terrain::HeightField& field_;
+  TerrainDraw terrain_;
+  SkyDraw sky_;
+  SphereDraw spheres_;
+  std::optional<SkyMap> baked_;  // for the lighting below
+  std::optional<shading::Lighting> baked_for_;
+  double baked_scale_ = 0.0;
+};
+
+}  // namespace skylit::view

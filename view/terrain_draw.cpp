@@ -1,0 +1,114 @@
+#include "view/terrain_draw.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <vector>
+
+#include "gpu/gl_context.h"
+#include "view/display_defines.h"
+
+namespace skylit::view {
+namespace {
+
+gpu::GlslDefines terrain_defines() {
+  gpu::GlslDefines d = display_code_defines();
+  d.set("PATCH", kPatchQuads);
+  return d;
+}
+
+// Two triangles per quad of the (PATCH + 2)² grid of the patch with its skirt ring.
+std::vector<std::uint32_t> patch_indices() {
+  const int n = kPatchQuads + 3;  // vertices per side
+  std::vector<std::uint32_t> out;
+  out.reserve(static_cast<std::size_t>(n - 1) * (n - 1) * 6);
+  for (int b = 0; b + 1 < n; ++b)
+    for (int a = 0; a + 1 < n; ++a) {
+      const std::uint32_t v = static_cast<std::uint32_t>(b * n + a);
+      out.insert(out.end(), {v, v + 1, v + n, v + 1, v + n + 1, v + n});
+    }
+  return out;
+}
+
+}  // namespace
+
+TerrainDraw::TerrainDraw(const terrain::HeightField& field)
+    : lod_(field),
+      heights_(field.width, field.height, gpu::TextureFormat::R32F),
+      program_("view_terrain.vert", "view_terrain.frag", terrain_defines()),
+      width_(field.width),
+      height_(field.height),
+      dx_(field.mean_dx()),
+      dy_(field.dy) {
+  heights_.upload(field.heights);
+  revision_ = field.revision;
+  field_id_ = field.id.value();
+  const std::vector<std::uint32_t> idx = patch_indices();
+  index_count_ = static_cast<int>(idx.size());
+  glCreateVertexArrays(1, &vao_);
+  glCreateBuffers(1, &indices_);
+  glNamedBufferStorage(indices_, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(), 0);
+  glVertexArrayElementBuffer(vao_, indices_);
+  gpu::throw_on_gl_error("TerrainDraw");
+}
+
+TerrainDraw::~TerrainDraw() {
+  glDeleteBuffers(1, &indices_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void TerrainDraw::sync(const terrain::HeightField& field) {
+  if (field.id.value() != field_id_ || field.width != width_ || field.height != height_)
+    throw std::logic_error("TerrainDraw::sync: another field (make a new TerrainDraw)");
+  if (field.revision == revision_) return;
+  const terrain::PixelRect r = field.last_dirty;
+  if (!r.empty()) {
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, field.width);
+    glTextureSubImage2D(heights_.id(), 0, r.x0, r.y0, r.width, r.height, GL_RED, GL_FLOAT,
+                        field.heights.data() + static_cast<std::size_t>(r.y0) * field.width + r.x0);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    lod_.update(field, r);
+  }
+  revision_ = field.revision;
+}
+
+void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, const glm::dvec3& eye,
+                       double pixels_per_radian, const TerrainStyle& style) {
+  if (frame.width != width_ || frame.height != height_)
+    throw std::invalid_argument("TerrainDraw: the frame is not of this field");
+  LodView v;
+  v.view_proj = view_proj;
+  v.eye = eye;
+  v.pixels_per_radian = pixels_per_radian;
+  v.max_error_px = style.max_error_px;
+  v.exaggeration = style.exaggeration;
+  const std::vector<LodNode> nodes = lod_.select(v);
+  nodes_ = nodes.size();
+
+  const glm::mat4 vp(view_proj);
+  program_.use();
+  program_.set_mat4("view_proj", glm::value_ptr(vp));
+  program_.set("field_size", width_, height_);
+  program_.set("spacing", static_cast<float>(dx_), static_cast<float>(dy_));
+  program_.set("exaggeration", static_cast<float>(style.exaggeration));
+  program_.set("curvature", style.curvature && pixels_per_radian > 0.0 ? static_cast<float>(0.5 / kEarthRadiusM) : 0.0f);
+  program_.set("eye_xy", static_cast<float>(eye.x), static_cast<float>(eye.y));
+  program_.set("band_count", frame.band_count);
+  program_.set("display_scale", static_cast<float>(frame.display_scale));
+  program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
+  heights_.bind_sampler(0);
+  frame.bands.bind_storage(0);
+  glBindVertexArray(vao_);
+  for (const LodNode& n : nodes) {
+    program_.set("node_origin", n.i0, n.j0);
+    program_.set("node_stride", n.stride);
+    // Deep enough to hide the step to a neighbour of another stride on steep ground.
+    program_.set("skirt_m", static_cast<float>(std::max(5.0, 2.0 * n.stride * std::max(dx_, dy_)) * style.exaggeration));
+    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+  gpu::throw_on_gl_error("TerrainDraw::draw");
+}
+
+}  // namespace skylit::view

@@ -1,0 +1,56 @@
+// Draws the height field as a mesh (terrain_lod.h's nodes, one instanced patch each)
+// coloured by a `shaded` frame that stays on the GPU (gpu::GpuFrame). Needs a current
+// GL 4.5 context, the one the frame was computed in.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+
+#include "gpu/buffers.h"
+#include "gpu/gpu_renderer.h"
+#include "gpu/graphics_program.h"
+#include "shading/products.h"
+#include "terrain/height_field.h"
+#include "view/terrain_lod.h"
+
+namespace skylit::view {
+
+// Earth's mean radius: the ground falls away from the eye by d² / (2R).
+inline constexpr double kEarthRadiusM = 6371008.8;
+
+struct TerrainStyle {
+  double exaggeration = 1.0;
+  bool curvature = true;
+  double max_error_px = 2.0;
+  shading::ToneCurve tone = shading::ToneCurve::Srgb;
+};
+
+class TerrainDraw {
+ public:
+  explicit TerrainDraw(const terrain::HeightField& field);
+  ~TerrainDraw();
+  TerrainDraw(const TerrainDraw&) = delete;
+  TerrainDraw& operator=(const TerrainDraw&) = delete;
+
+  // Re-uploads the rows the field's last edit changed (a no-op when the field's revision
+  // is the one drawn).
+  void sync(const terrain::HeightField& field);
+  // pixels_per_radian 0: orthographic (every node at full resolution).
+  void draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian,
+            const TerrainStyle& style);
+  std::size_t last_node_count() const { return nodes_; }
+
+ private:
+  TerrainLod lod_;
+  gpu::Texture2D heights_;
+  gpu::GraphicsProgram program_;
+  std::uint32_t vao_ = 0, indices_ = 0;
+  int index_count_ = 0;
+  int width_, height_;
+  double dx_, dy_;
+  std::uint64_t revision_ = 0, field_id_ = 0;
+  std::size_t nodes_ = 0;
+};
+
+}  // namespace skylit::view

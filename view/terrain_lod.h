@@ -1,0 +1,63 @@
+// The terrain mesh's level of detail by screen-space error: a quadtree over the height
+// field whose node at level l covers kPatchQuads · 2^l texels with one vertex every 2^l
+// texels. A node is split while its vertex spacing, seen from the eye, exceeds the
+// allowed pixels; nodes outside the view frustum are dropped by their height bounds.
+// Neighbours of different levels meet with a skirt (view_terrain.vert), not a crack.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+#include "terrain/height_field.h"
+
+namespace skylit::view {
+
+inline constexpr int kPatchQuads = 32;  // quads along a node's side
+
+struct LodNode {
+  int i0 = 0, j0 = 0;  // first texel
+  int stride = 1;      // texels between vertices
+};
+
+struct LodView {
+  glm::dmat4 view_proj{1.0};  // field frame (x east, y north, z up) to clip space
+  glm::dvec3 eye{0.0};
+  double pixels_per_radian = 1000.0;  // viewport height / (2 tan(fovy / 2)); 0: orthographic
+  double max_error_px = 2.0;          // vertex spacing allowed on screen
+  double exaggeration = 1.0;
+};
+
+class TerrainLod {
+ public:
+  // Height bounds of every node (from the field's heights, nodata included as filled).
+  explicit TerrainLod(const terrain::HeightField& field);
+  // Bounds of the texels in `rect` recomputed after an edit.
+  void update(const terrain::HeightField& field, const terrain::PixelRect& rect);
+
+  // The nodes to draw, coarse where far. Orthographic views (pixels_per_radian 0) get
+  // every node at stride 1 inside the frustum.
+  std::vector<LodNode> select(const LodView& view) const;
+
+  int levels() const { return static_cast<int>(bounds_.size()); }
+  // Height range (min, max) of the node at `level` and node index (ni, nj).
+  glm::dvec2 bounds(int level, int ni, int nj) const;
+  double spacing_x() const { return dx_; }
+  double spacing_y() const { return dy_; }
+
+ private:
+  struct Level {
+    int nodes_x = 0, nodes_y = 0;
+    std::vector<glm::vec2> range;  // per node: min, max height
+  };
+  void build_level0(const terrain::HeightField& field, const terrain::PixelRect& rect);
+  void build_parents(int ni0, int nj0, int ni1, int nj1);
+  void visit(int level, int ni, int nj, const LodView& view, std::vector<LodNode>& out) const;
+
+  int width_ = 0, height_ = 0;
+  double dx_ = 1.0, dy_ = 1.0;
+  std::vector<Level> bounds_;  // level 0: nodes of kPatchQuads texels (plus the shared edge)
+};
+
+}  // namespace skylit::view

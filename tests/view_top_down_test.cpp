@@ -158,5 +158,57 @@ TEST_F(TopDownTest, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   EXPECT_NEAR(sy / weight, want_y, 15.0);
 }
 
+TEST_F(TopDownTest, AircraftIsDrawnWherePerspectivePutsIt) {
+  // Flat ground at 0 m; the eye looking north at a 20 m sphere ahead at the eye's height,
+  // the sun behind the eye: on screen a disc at the centre whose radius is
+  // ppr · tan(asin(r/d)) pixels. 1000 m up with the sphere 120 m ahead, a near plane
+  // from the height alone (500 m) would clip it away.
+  terrain::HeightField f(160, 160, 10.0);
+  for (const auto [height, ahead] : {std::pair{150.0, 500.0}, std::pair{1000.0, 120.0}}) {
+    const glm::dvec3 eye{800.0, -1300.0, height}, centre{800.0, -1300.0 + ahead, height};
+    const double r = 20.0;
+    const int size = 256;
+    shading::FrameInputs without;
+    without.lighting = lighting_at(180.0, 35.0, "uniform");
+    shading::FrameInputs with = without;
+    with.spheres = {{centre, r}};
+    gpu::GpuRenderer renderer;
+    const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+    SceneView view(renderer, f, o);
+    OffscreenTarget target(size, size);
+    auto draw = [&](const shading::FrameInputs& inputs) {
+      target.bind();
+      ViewFrame frame;
+      frame.shading = inputs;
+      frame.camera = perspective_camera({eye, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}, f, size, size, 1.0, inputs.spheres);
+      frame.style.tone = o.shaded.tone;
+      view.draw(frame, size, size);
+      return target.read_rgb();
+    };
+    const auto bare = draw(without), drawn = draw(with);
+    const double ppr = size / (2.0 * std::tan(25.0 * std::numbers::pi / 180.0));
+    const double radius_px = ppr * std::tan(std::asin(r / glm::distance(eye, centre)));
+    int inside = 0, inside_changed = 0, outside_changed = 0;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const double dx = x + 0.5 - 0.5 * size, dy = y + 0.5 - 0.5 * size;  // y down (top row first)
+        if (dy > 30.0) continue;  // below: the sphere's shadow on the ground, 214 m behind it
+        const std::size_t p = (static_cast<std::size_t>(y) * size + x) * 3;
+        const bool changed = bare[p] != drawn[p] || bare[p + 1] != drawn[p + 1] || bare[p + 2] != drawn[p + 2];
+        const double rho = std::hypot(dx, dy);
+        if (rho < radius_px - 1.5) {
+          ++inside;
+          inside_changed += changed;
+        } else if (rho > radius_px + 1.5) {
+          outside_changed += changed;
+        }
+      }
+    EXPECT_GT(radius_px, 10.0);
+    // A few rim pixels may match the haze behind by chance.
+    EXPECT_GT(inside_changed, 0.98 * inside) << "the sphere covers its disc; eye " << height << " m, " << ahead << " m";
+    EXPECT_EQ(outside_changed, 0) << "and nothing else above its shadow; eye " << height << " m";
+  }
+}
+
 }  // namespace
 }  // namespace skylit::view

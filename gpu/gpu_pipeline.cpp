@@ -62,6 +62,7 @@ enum Binding : int {
   kVis = 16,  // the kept visibility (surface_products.comp, VIS_CACHE)
   kSweepGamma = 17,  // horizon_sweep.comp on curved rows: Γ of the half rows, in double
   kSweepRowDx = 18,  // and the rows' spacings in double
+  kKeptHorizons = 19,  // a blocked pipeline's kept floored horizons (surface_products.comp)
 };
 
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
@@ -391,7 +392,7 @@ struct GpuProductPipeline::Impl {
     const int kind = swept ? (one_dx ? 1 : 2) : 0;
     if (!products[cache][kind]) {
       GlslDefines d = products_defines;
-      d.set("SWEPT", swept ? 1 : 0).set("VIS_CACHE", cache).set("VIS_BINDING", kVis);
+      d.set("SWEPT", swept ? 1 : 0).set("VIS_CACHE", cache).set("VIS_BINDING", kVis).set("KEPT_HORIZON_BINDING", kKeptHorizons);
       if (swept) {
         d.set("RAY_TEXTURES", 1)
             .set("ONE_DX", one_dx ? 1 : 0)
@@ -406,9 +407,10 @@ struct GpuProductPipeline::Impl {
     }
     return *products[cache][kind];
   }
-  // The kept visibility: SH_COEFFS floats per texel, coefficient-major, for the field
-  // revision it was computed from (vis_valid).
-  Buffer vis;
+  // The kept visibility: SH_COEFFS floats per texel, coefficient-major, and in a blocked
+  // pipeline the AZIMUTHS floored horizon slopes, band-major, for the field revision
+  // they were computed from (vis_valid).
+  Buffer vis, kept_horizons;
   bool keep_vis = false, vis_valid = false;
   std::uint64_t vis_field_id = 0, vis_revision = 0;
   int vis_rows = 0;
@@ -708,6 +710,7 @@ void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) 
 void GpuProductPipeline::drop_visibility() {
   Impl& k = *mImpl;
   k.vis = Buffer();
+  k.kept_horizons = Buffer();
   k.vis_valid = false;
   k.frames = 0;
 }
@@ -790,17 +793,23 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // The visibility an earlier compute() kept for this field revision (stages 1–2 and the
   // visibility are skipped), or (keeping) this one's, for the computes after it.
   const bool vis_product = needs_visibility(mProduct);
-  // A blocked frame needs the horizons (the spheres' horizon cull): it keeps nothing.
-  const bool reuse = vis_product && !k.blockers && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
-  bool keep = vis_product && !k.blockers && !reuse && (k.keep_vis || k.frames > 0);
+  // A blocked frame keeps the floored horizon slopes too (the spheres' horizon cull).
+  const bool reuse = vis_product && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
+  bool keep = vis_product && !reuse && (k.keep_vis || k.frames > 0);
   if (keep) {
     const std::size_t vis_bytes = texels * static_cast<std::size_t>(k.vis_rows) * sizeof(float);
+    const std::size_t horizon_bytes = k.blockers ? texels * static_cast<std::size_t>(bands) * sizeof(float) : 0;
     k.vis_valid = false;
     try {
       check_storage_size(vis_bytes, "GPU pipeline: the kept visibility");
+      check_storage_size(horizon_bytes, "GPU pipeline: the kept horizons");
       if (k.vis.size_bytes() != vis_bytes) {
         k.vis = Buffer();
         k.vis = Buffer(vis_bytes);
+      }
+      if (horizon_bytes != 0 && k.kept_horizons.size_bytes() != horizon_bytes) {
+        k.kept_horizons = Buffer();
+        k.kept_horizons = Buffer(horizon_bytes);
       }
     } catch (const std::runtime_error&) {
       keep = false;  // over one storage buffer: every compute() does all its work
@@ -927,7 +936,10 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   const ComputeProgram& products =
       k.products_kernel(mOptions, sweep, one_dx, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
-  if (reuse || keep) k.vis.bind_storage(kVis);
+  if (reuse || keep) {
+    k.vis.bind_storage(kVis);
+    if (k.blockers) k.kept_horizons.bind_storage(kKeptHorizons);
+  }
   if (k.blockers) k.blockers->bind(products);
   if (sweep) {
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);

@@ -93,6 +93,33 @@ TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
   }
 }
 
+// Aircraft move every frame: a blocked series keeps the terrain's visibility and its
+// floored horizons (the spheres' horizon cull) and equals fresh blocked pipelines.
+TEST_F(GpuRendererTest, BlockedSeriesFramesEqualFreshPipelinesAndReuseTheHorizons) {
+  const terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  const auto renderer = renderer_on(f, o, 3);
+  GpuRenderer& r = *renderer;
+  const Lighting sun = lighting_at(135, 30, "preetham");
+  const double dx = f.mean_dx(), dy = f.dy;
+  for (Product p : {Product::Shaded, Product::Irradiance}) {
+    for (int k = 0; k < 3; ++k) {
+      // A low sphere whose sky cap is partly behind the terrain from nearby texels, so
+      // the horizon cull decides texels.
+      const std::vector<blockers::Sphere> spheres = {{{(20.0 + 8 * k) * dx, -(30.0 + 5 * k) * dy, f.at(20 + 8 * k, 30 + 5 * k) + 60.0}, 40.0},
+                                                     {{40.0 * dx, -(10.0 + 10 * k) * dy, 2500.0}, 80.0}};
+      const ProductBands got = r.frame(p, {sun, spheres, std::nullopt});
+      EXPECT_EQ(r.last_timings().horizons_reused, k > 0) << shading::product_name(p) << " frame " << k;
+      r.context().make_current();
+      ProductOptions lit = o;
+      lit.lighting = sun;
+      GpuProductPipeline one(p, lit, true);
+      one.set_spheres(spheres);
+      EXPECT_TRUE(bit_identical(got, one.compute(f))) << shading::product_name(p) << " frame " << k;
+    }
+  }
+}
+
 TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
   terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();

@@ -1,11 +1,22 @@
 // Flight trails: the track → polyline conversion on the CPU (gaps break it, the colour
-// ramps' ends at the track's extremes, climb rates by finite differences).
+// ramps' ends at the track's extremes, climb rates by finite differences), and the drawn
+// lines where the camera's matrices put them, broken at a gap, cut at the playback time
+// and depth-tested. llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <vector>
 
+#include "view/camera.h"
+#include "view/offscreen_target.h"
+#include "view/trail_draw.h"
 #include "view/trail_polyline.h"
 
 namespace skylit::view {
@@ -103,6 +114,129 @@ TEST(TrailPolylines, ClimbIsNotDifferencedAcrossAGap) {
       EXPECT_EQ(v.value, 0.0) << "at t = " << v.time_s;
       expect_colour(v.colour, kLevel, "level flight");
     }
+}
+
+// ---- Drawn ----
+
+using TrailDrawTest = gpu::testing::GpuTest;
+
+constexpr int kSize = 256;
+constexpr double kExaggeration = 2.0;
+
+// From 450 m over the origin, looking north and 19 degrees off straight down.
+glm::dmat4 test_view_proj() {
+  const CameraPose pose{{0.0, 0.0, 450.0}, glm::normalize(glm::dvec3(0, 0.35, -1)), glm::normalize(glm::dvec3(0, 1, 0.35))};
+  return projection_matrix({50.0, 1.0, 1.0, 5000.0}) * view_matrix(pose);
+}
+
+struct Projected {
+  glm::dvec2 pixel;  // x right, y down (read_rgb's rows, top first)
+  double depth;      // window depth, 0..1
+};
+
+// Where the GL pipeline should put a field-frame point: clip, NDC, viewport.
+Projected project(const glm::dvec3& p) {
+  const glm::dvec4 clip = test_view_proj() * glm::dvec4(p.x, p.y, p.z * kExaggeration, 1.0);
+  const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+  return {{(ndc.x + 1.0) * 0.5 * kSize, (1.0 - ndc.y) * 0.5 * kSize}, ndc.z * 0.5 + 0.5};
+}
+
+using Image = std::vector<std::uint8_t>;
+
+Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double clear_depth = 1.0) {
+  OffscreenTarget target(kSize, kSize);
+  target.bind();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(clear_depth);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  TrailDraw trails(trail);
+  trails.draw(test_view_proj(), kExaggeration, drawn_until_s);
+  glFinish();
+  return target.read_rgb();
+}
+
+glm::vec3 at(const Image& img, int x, int y) {
+  const std::size_t p = (static_cast<std::size_t>(y) * kSize + x) * 3;
+  return glm::vec3(img[p], img[p + 1], img[p + 2]) / 255.0f;
+}
+
+// The drawn colour within `r` pixels of a point (a 1-pixel line's fragments may sit
+// beside the exact projection), or nullopt where nothing was drawn there.
+std::optional<glm::vec3> drawn_near(const Image& img, glm::dvec2 pixel, int r) {
+  const int cx = static_cast<int>(std::floor(pixel.x)), cy = static_cast<int>(std::floor(pixel.y));
+  for (int y = cy - r; y <= cy + r; ++y)
+    for (int x = cx - r; x <= cx + r; ++x) {
+      if (x < 0 || y < 0 || x >= kSize || y >= kSize) continue;
+      if (at(img, x, y) != glm::vec3(0.0f)) return at(img, x, y);
+    }
+  return std::nullopt;
+}
+
+bool inside(glm::dvec2 p) { return p.x > 3 && p.y > 3 && p.x < kSize - 3 && p.y < kSize - 3; }
+
+// Track A (west, x = -40): 1 s fixes from y = 0 to 90, a 61 s gap, then 10 s fixes from
+// y = 150 to 250. Track B (east, x = +40): 1 s fixes with no gap. Both level at 50 m.
+std::vector<flight::PlacedFix> track_a() {
+  std::vector<flight::PlacedFix> f;
+  for (int t = 0; t < 10; ++t) f.push_back({double(t), {-40.0, 10.0 * t, 50.0}});
+  for (int t = 70; t <= 90; t += 10) f.push_back({double(t), {-40.0, 150.0 + 5.0 * (t - 70), 50.0}});
+  return f;
+}
+std::vector<flight::PlacedFix> track_b() {
+  std::vector<flight::PlacedFix> f;
+  for (int t = 0; t < 80; ++t) f.push_back({double(t), {40.0, 3.0 * t, 50.0}});
+  return f;
+}
+
+TEST_F(TrailDrawTest, TwoTracksDrawnWhereTheCameraPutsThemWithTheGapLeftOpen) {
+  std::vector<TrailPolyline> trail = trail_polylines(track_a(), same, TrailColour::Altitude);
+  ASSERT_EQ(trail.size(), 2u);
+  for (TrailPolyline& p : trail_polylines(track_b(), same, TrailColour::ClimbRate)) trail.push_back(std::move(p));
+  const Image img = draw(trail, 1e12);
+  for (const TrailPolyline& p : trail)
+    for (std::size_t k = 0; k + 1 < p.vertices.size(); ++k) {
+      const glm::dvec3 mid = 0.5 * (p.vertices[k].position + p.vertices[k + 1].position);
+      const Projected q = project(mid);
+      ASSERT_TRUE(inside(q.pixel)) << "the test's camera sees the whole trail";
+      const auto c = drawn_near(img, q.pixel, 1);
+      ASSERT_TRUE(c.has_value()) << "segment at y = " << mid.y << ", x = " << mid.x << ", pixel " << q.pixel.x << ", "
+                                 << q.pixel.y;
+      EXPECT_LT(glm::distance(*c, p.vertices[k].colour), 1.5f / 255.0f) << "its vertices' colour";
+    }
+  // Level flight: A (by altitude, no range) in the ramp's middle, B (by climb) level white.
+  EXPECT_LT(glm::distance(*drawn_near(img, project({-40.0, 50.0, 50.0}).pixel, 1), kViridisMiddle), 1.5f / 255.0f);
+  EXPECT_LT(glm::distance(*drawn_near(img, project({40.0, 50.0, 50.0}).pixel, 1), kLevel), 1.5f / 255.0f);
+
+  const Projected before = project({-40.0, 90.0, 50.0}), after = project({-40.0, 150.0, 50.0});
+  ASSERT_GT(glm::distance(before.pixel, after.pixel), 10.0) << "a gap long enough on screen to see";
+  EXPECT_FALSE(drawn_near(img, project({-40.0, 120.0, 50.0}).pixel, 2)) << "the gap's middle is not bridged";
+  EXPECT_TRUE(drawn_near(img, project({40.0, 120.0, 50.0}).pixel, 1)) << "track B has no gap there";
+}
+
+TEST_F(TrailDrawTest, DrawnUpToThePlaybackTimeInsideASegment) {
+  const std::vector<TrailPolyline> trail = trail_polylines(track_a(), same, TrailColour::Altitude);
+  // Cut at 85 s: halfway along the segment from (y = 200, 80 s) to (y = 250, 90 s).
+  const Image img = draw(trail, 85.0);
+  for (double y : {10.0, 80.0, 160.0, 195.0, 210.0, 217.0})
+    EXPECT_TRUE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "drawn before the cut, y = " << y;
+  for (double y : {233.0, 240.0, 248.0})
+    EXPECT_FALSE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "not after it, y = " << y;
+  ASSERT_GT(glm::distance(project({-40.0, 217.0, 50.0}).pixel, project({-40.0, 233.0, 50.0}).pixel), 3.0);
+
+  const Image none = draw(trail, -1.0);
+  EXPECT_EQ(std::count(none.begin(), none.end(), 0), static_cast<std::ptrdiff_t>(none.size()))
+      << "nothing before the first fix";
+}
+
+TEST_F(TrailDrawTest, DepthTestedAgainstWhatIsAlreadyDrawn) {
+  const std::vector<TrailPolyline> trail = trail_polylines(track_a(), same, TrailColour::Altitude);
+  // Depth as if a surface lay at the depth of the point y = 45: nearer parts pass.
+  const Image img = draw(trail, 1e12, project({-40.0, 45.0, 50.0}).depth);
+  for (double y : {5.0, 20.0, 35.0}) EXPECT_TRUE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "y = " << y;
+  for (double y : {60.0, 80.0, 200.0})
+    EXPECT_FALSE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "hidden, y = " << y;
 }
 
 }  // namespace

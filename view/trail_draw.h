@@ -1,0 +1,41 @@
+// Draws flight trails (view/trail_polyline.h; any number of tracks) as 1-pixel lines up
+// to the playback time, into the bound framebuffer after the terrain, depth-tested as
+// the caller set it (SceneView: GL_LESS). Needs a current GL 4.5 context.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "gpu/buffers.h"
+#include "gpu/graphics_program.h"
+#include "view/trail_polyline.h"
+
+namespace skylit::view {
+
+class TrailDraw {
+ public:
+  // Uploads the polylines once; they are drawn as they are (no gap is bridged).
+  explicit TrailDraw(std::span<const TrailPolyline> polylines);
+  ~TrailDraw();
+  TrailDraw(const TrailDraw&) = delete;
+  TrailDraw& operator=(const TrailDraw&) = delete;
+
+  // Every polyline up to drawn_until_s (UTC), its last segment cut at that instant; z
+  // scaled by the exaggeration as the terrain and the aircraft are (like the aircraft,
+  // without the terrain's curvature drop).
+  void draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s);
+
+ private:
+  gpu::GraphicsProgram program_;
+  gpu::Buffer vertices_;
+  std::vector<double> times_;  // per vertex, UTC: how much of each polyline to draw
+  std::vector<std::int32_t> firsts_, ends_;  // per polyline: its vertices [first, end)
+  std::vector<std::int32_t> counts_;         // per draw
+  double time_origin_ = 0.0;  // the shader's times are float seconds after it
+  std::uint32_t vao_ = 0;
+};
+
+}  // namespace skylit::view

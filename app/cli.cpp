@@ -21,6 +21,7 @@ int run_cli(int argc, char** argv) {
   flight::add_track_command(root, run);
   tiles::add_tiles_command(root, run);
   view::add_render_command(root, run);
+  view::add_view_command(root, run);
   try {
     // CLI11 wants argv in reverse order when given as a vector.
     std::vector<std::string> args = normalise_gdal_style_args(argc, argv);

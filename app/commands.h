@@ -45,5 +45,6 @@ void add_spheres_fit_command(CLI::App& root, Action& run);
 namespace skylit::app::view {  // app/view/: the viewer's frames
 
 void add_render_command(CLI::App& root, Action& run);
+void add_view_command(CLI::App& root, Action& run);  // runs skylit-view
 
 }  // namespace skylit::app::view

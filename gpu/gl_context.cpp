@@ -1,10 +1,10 @@
 #include "gpu/gl_context.h"
+#include "gpu/loaded_objects.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
 #include <dlfcn.h>
-#include <link.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -157,29 +157,6 @@ std::optional<Created> create_surfaceless(std::string& why) {
                    why);
 }
 
-// Paths of the shared objects mapped now.
-std::set<std::string> loaded_objects() {
-  std::set<std::string> paths;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, std::size_t, void* out) {
-        if (info->dlpi_name && *info->dlpi_name) static_cast<std::set<std::string>*>(out)->insert(info->dlpi_name);
-        return 0;
-      },
-      &paths);
-  return paths;
-}
-
-// Pins every object loaded since `before` (the EGL vendor, its driver, LLVM). eglTerminate
-// unloads Mesa's driver, whose globals then no longer root what it allocated once per
-// process: LeakSanitizer reports those tables as leaks of an "<unknown module>" (seen
-// with Mesa 22.3.6-1+deb12u2). Kept loaded, they stay reachable, a real leak of the
-// driver is still reported under the driver's name, and a later context does not
-// reload it.
-void keep_loaded_since(const std::set<std::string>& before) {
-  for (const std::string& path : loaded_objects())
-    if (!before.contains(path)) dlopen(path.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-}
-
 std::string gl_string(GLenum name) {
   const char* s = reinterpret_cast<const char*>(glGetString(name));
   return s ? s : "";
@@ -194,7 +171,7 @@ HeadlessContext::HeadlessContext(const ContextOptions& options) {
     throw std::runtime_error(
         "no OpenGL 4.5 context could be created: libEGL.so.1 not found (install libegl1 "
         "and a driver, e.g. libegl-mesa0 + libgl1-mesa-dri for llvmpipe)");
-  const std::set<std::string> before = loaded_objects();
+  const LoadedObjects before;
   std::string errors;
   auto attempt = [&](const char* label, auto&& create) -> bool {
     std::string why;
@@ -222,7 +199,7 @@ HeadlessContext::HeadlessContext(const ContextOptions& options) {
       ok = attempt("EGL surfaceless", create_surfaceless);
       break;
   }
-  keep_loaded_since(before);
+  before.keep_the_new_loaded();
   if (!ok) throw std::runtime_error("no OpenGL 4.5 context could be created: " + errors);
   mRenderer = gl_string(GL_RENDERER);
   mVersion = gl_string(GL_VERSION);

@@ -18,6 +18,8 @@ PACKAGES=(
   clang-16 libclang-rt-16-dev   # libFuzzer for scripts/fuzz.sh (the build itself uses g++)
   chromium                      # headless browser for the tile viewer's test (tests/web)
   ffmpeg                        # skylit render: video encoding (frames piped to it)
+  libimgui-dev                  # skylit-view's panel (Dear ImGui with its GLFW and OpenGL 3 backends)
+  xvfb xauth                    # the viewer's window tests (xvfb-run)
 )
 # tests/web runs on node + npm: Debian's, unless a node is installed already (NodeSource's
 # nodejs ships its own npm and conflicts with Debian's npm package).

@@ -90,8 +90,12 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
     last = now;
     return ms;
   };
-  const gpu::GpuFrame shaded = renderer_.frame_on_gpu(shading::Product::Shaded, frame.shading);
-  t.horizons_reused = renderer_.last_timings().horizons_reused;
+  if (!frame.reuse_shading || !shaded_) {
+    shaded_.reset();
+    shaded_.emplace(renderer_.frame_on_gpu(shading::Product::Shaded, frame.shading));
+  }
+  const gpu::GpuFrame& shaded = *shaded_;
+  t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
   terrain_.sync(field_);
   t.shading_ms = lap();
 

@@ -47,6 +47,8 @@ struct ViewFrame {
   TerrainStyle style;
   bool draw_bodies = true;  // the aircraft drawn (the top-down map shows their shadows only)
   glm::dvec3 clear{0.0};    // behind everything where no sky is drawn (orthographic)
+  // Draws the renderer's previous frame again (the tiles of one screenshot), if any.
+  bool reuse_shading = false;
 };
 
 // Where a frame's time went (wall clock, ms; with `measure`, each pass is finished
@@ -73,6 +75,7 @@ class SceneView {
   TerrainDraw terrain_;
   SkyDraw sky_;
   SphereDraw spheres_;
+  std::optional<gpu::GpuFrame> shaded_;  // the last frame's (valid until the renderer's next)
   std::optional<SkyMap> baked_;  // for the lighting below
   std::optional<shading::Lighting> baked_for_;
   double baked_scale_ = 0.0;

@@ -72,9 +72,13 @@ void TrackedAircraft::place(const std::vector<skylit::flight::Track>& tracks, co
   if (placed_ == 0) throw std::invalid_argument(source + ": no track has two valid fixes with a usable altitude");
 }
 
+glm::dvec3 TrackedAircraft::to_field(const glm::dvec3& crs) const {
+  return to_field_frame(field_, {{crs, 1.0}}).front().centre;
+}
+
 std::optional<skylit::flight::Pose> TrackedAircraft::pose_at(std::size_t k, double unix_seconds) const {
   std::optional<skylit::flight::Pose> pose = samplers_[k] ? samplers_[k]->pose_at(unix_seconds) : std::nullopt;
-  if (pose) pose->position = to_field_frame(field_, {{pose->position, 1.0}}).front().centre;
+  if (pose) pose->position = to_field(pose->position);
   return pose;
 }
 

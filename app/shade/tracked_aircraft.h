@@ -34,6 +34,10 @@ class TrackedAircraft {
   // in the field frame; nullopt when it has no pose then or fewer than two placed fixes.
   std::optional<skylit::flight::Pose> pose_at(std::size_t k, double unix_seconds) const;
   std::size_t tracks() const { return samplers_.size(); }
+  // Track k's placed fixes (CRS positions), or null when it has fewer than two.
+  const skylit::flight::TrackSampler* sampler(std::size_t k) const { return samplers_[k] ? &*samplers_[k] : nullptr; }
+  // A CRS position (a placed fix's) in the field frame, as pose_at places it.
+  glm::dvec3 to_field(const glm::dvec3& crs) const;
   const skylit::flight::SphereSet& set() const { return set_; }
   // "glider (30 spheres) on 1 track, 2026-06-21T10:00:00Z to 2026-06-21T10:10:00Z".
   std::string summary() const;

@@ -1,5 +1,6 @@
 #include "app/common/synthetic_scene.h"
 
+#include "terrain/dem_reader.h"
 #include "terrain/synthetic.h"
 
 #include <ogr_spatialref.h>
@@ -32,6 +33,19 @@ terrain::HeightField make_georeferenced_scene(int size, std::uint64_t seed) {
   field.georef.has_geotransform = true;
   field.georef.geographic = false;
   return field;
+}
+
+terrain::HeightField load_dems_or_scene(const std::vector<std::string>& inputs, bool synthetic, int scene_size,
+                                        std::uint64_t seed, std::ostream* warnings, const std::string& who) {
+  if (synthetic) {
+    if (!inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
+    return make_georeferenced_scene(scene_size, seed);
+  }
+  if (inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
+  auto r = inputs.size() == 1 ? terrain::read_dem(inputs.front(), {}) : terrain::read_dem(inputs, {});
+  if (warnings)
+    for (const auto& w : r.warnings) *warnings << who << ": warning: " << w << "\n";
+  return std::move(r.field);
 }
 
 }  // namespace skylit::app

@@ -7,10 +7,19 @@
 #include "terrain/height_field.h"
 
 #include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
 
 namespace skylit::app {
 
 // Throws std::runtime_error when GDAL/PROJ cannot build the CRS (proj-data missing).
 terrain::HeightField make_georeferenced_scene(int size, std::uint64_t seed);
+
+// The viewer's field: INPUT DEM(s) (a mosaic when several), or with `synthetic` the scene
+// above; the reader's warnings go to `warnings` ("<who>: warning: …") unless null.
+// Throws std::invalid_argument for both or neither.
+terrain::HeightField load_dems_or_scene(const std::vector<std::string>& inputs, bool synthetic, int scene_size,
+                                        std::uint64_t seed, std::ostream* warnings, const std::string& who);
 
 }  // namespace skylit::app

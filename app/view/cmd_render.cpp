@@ -12,7 +12,6 @@
 #include "gpu/gpu_renderer.h"
 #include "shading/sky/time_utc.h"
 #include "shading/time_series.h"
-#include "terrain/dem_reader.h"
 #include "view/camera.h"
 #include "view/offscreen_target.h"
 #include "view/scene_view.h"
@@ -60,18 +59,6 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
-terrain::HeightField load(const RenderArgs& a) {
-  if (a.synthetic) {
-    if (!a.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
-    return make_georeferenced_scene(a.scene_size, a.seed);
-  }
-  if (a.inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
-  auto r = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front(), {}) : terrain::read_dem(a.inputs, {});
-  if (!a.quiet)
-    for (const auto& w : r.warnings) std::cerr << "skylit: warning: " << w << "\n";
-  return std::move(r.field);
-}
-
 double parse_time(const std::string& text, const char* flag) {
   try {
     return sky::parse_utc_time(text).unix_seconds;
@@ -87,7 +74,8 @@ int run_render(const RenderArgs& a) {
   if (!nadir && !mode) throw std::invalid_argument("--camera '" + a.camera + "' is not follow, orbit, free or ortho-nadir");
   if (!(a.speed > 0.0) || !std::isfinite(a.speed)) throw std::invalid_argument("--speed must be > 0");
   if (!(a.exaggeration > 0.0) || a.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
-  const terrain::HeightField field = load(a);
+  const terrain::HeightField field =
+      load_dems_or_scene(a.inputs, a.synthetic, a.scene_size, a.seed, a.quiet ? nullptr : &std::cerr, "skylit");
 
   std::optional<shade::TrackedAircraft> aircraft;
   if (!a.track.empty()) aircraft.emplace(a.track, a.aircraft, parse_altitude_arg(a.altitude), field);

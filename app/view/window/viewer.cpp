@@ -30,7 +30,6 @@
 #include "shading/quality.h"
 #include "shading/time_series.h"
 #include "terrain/brush.h"
-#include "terrain/dem_reader.h"
 #include "terrain/field_coarsening.h"
 #include "view/camera.h"
 #include "view/scene_view.h"
@@ -50,18 +49,6 @@ int index_of(const char* const (&items)[N], const std::string& name) {
   for (std::size_t k = 0; k < N; ++k)
     if (name == items[k]) return static_cast<int>(k);
   return -1;
-}
-
-terrain::HeightField load(const ViewerOptions& o) {
-  if (o.synthetic) {
-    if (!o.inputs.empty()) throw std::invalid_argument("give either INPUT files or --synthetic, not both");
-    return make_georeferenced_scene(o.scene_size, o.seed);
-  }
-  if (o.inputs.empty()) throw std::invalid_argument("no INPUT DEM given (or use --synthetic for the built-in scene)");
-  auto r = o.inputs.size() == 1 ? terrain::read_dem(o.inputs.front(), {}) : terrain::read_dem(o.inputs, {});
-  if (!o.quiet)
-    for (const auto& w : r.warnings) std::cerr << "skylit-view: warning: " << w << "\n";
-  return std::move(r.field);
 }
 
 // The local solar day (by longitude) around t, for a clock with no track.
@@ -145,7 +132,8 @@ class Viewer {
 
 Viewer::Viewer(const ViewerOptions& o)
     : o_(o),
-      field_(load(o)),
+      field_(load_dems_or_scene(o.inputs, o.synthetic, o.scene_size, o.seed, o.quiet ? nullptr : &std::cerr,
+                                "skylit-view")),
       window_(o.width, o.height, "skylit", o.script.empty() && o.frames == 0),
       renderer_(std::make_unique<gpu::HeadlessContext>(gpu::AdoptCurrentContext{"GLFW window"})),
       exaggeration_(o.exaggeration),

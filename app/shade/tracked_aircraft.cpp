@@ -43,6 +43,19 @@ TrackedAircraft::TrackedAircraft(const std::string& track_path, const std::strin
   place(skylit::flight::read_track_file(track_path), "--track '" + track_path + "'", altitude);
 }
 
+TrackedAircraft::TrackedAircraft(const std::vector<std::string>& track_paths, const std::string& aircraft,
+                                 const skylit::flight::AltitudeMode& altitude, const terrain::HeightField& field)
+    : field_(field), set_(checked_set(field, aircraft)) {
+  std::vector<skylit::flight::Track> tracks;
+  std::string source = "--track";
+  for (const std::string& path : track_paths) {
+    const std::vector<skylit::flight::Track> read = skylit::flight::read_track_file(path);
+    tracks.insert(tracks.end(), read.begin(), read.end());
+    source += " '" + path + "'";
+  }
+  place(tracks, source, altitude);
+}
+
 TrackedAircraft::TrackedAircraft(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
                                  const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,
                                  const terrain::HeightField& field)

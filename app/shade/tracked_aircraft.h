@@ -22,6 +22,9 @@ class TrackedAircraft {
   // or a track none of whose fixes can be placed.
   TrackedAircraft(const std::string& track_path, const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,
                   const terrain::HeightField& field);
+  // Every track of several files, read in order (the viewer's and render's --track ...).
+  TrackedAircraft(const std::vector<std::string>& track_paths, const std::string& aircraft,
+                  const skylit::flight::AltitudeMode& altitude, const terrain::HeightField& field);
   // Tracks already read; `source` names them in errors ("--track 'f.igc'").
   TrackedAircraft(const std::vector<skylit::flight::Track>& tracks, const std::string& source,
                   const std::string& aircraft, const skylit::flight::AltitudeMode& altitude,

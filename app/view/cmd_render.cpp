@@ -45,7 +45,8 @@ struct RenderArgs {
   std::optional<double> duration;  // track seconds
   std::string from, to;
   double speed = 1.0;  // track seconds per video second
-  std::string track, aircraft = "glider", altitude = "gnss";
+  std::vector<std::string> tracks;
+  std::string aircraft = "glider", altitude = "gnss";
   double exaggeration = 1.0;
   bool overwrite = false, quiet = false, timings = false;
   LightingArgs light;
@@ -78,7 +79,7 @@ int run_render(const RenderArgs& a) {
       load_dems_or_scene(a.inputs, a.synthetic, a.scene_size, a.seed, a.quiet ? nullptr : &std::cerr, "skylit");
 
   std::optional<shade::TrackedAircraft> aircraft;
-  if (!a.track.empty()) aircraft.emplace(a.track, a.aircraft, parse_altitude_arg(a.altitude), field);
+  if (!a.tracks.empty()) aircraft.emplace(a.tracks, a.aircraft, parse_altitude_arg(a.altitude), field);
   // The span of track time the frames cover.
   double t0 = 0.0;
   if (!a.from.empty()) t0 = parse_time(a.from, "--from");
@@ -203,7 +204,8 @@ void add_render_command(CLI::App& root, Action& run) {
   cmd->add_option("--from", args->from, "First frame's time (ISO 8601 with a zone; default: the track's start)");
   cmd->add_option("--to", args->to, "Last frame's time");
   cmd->add_option("--speed", args->speed, "Track seconds per video second")->capture_default_str();
-  cmd->add_option("--track", args->track, "A flight track (IGC, GPX, KML gx:Track, CSV): its aircraft and their shadows");
+  cmd->add_option("--track", args->tracks,
+                  "Flight track(s) (IGC, GPX, KML gx:Track, CSV; repeat for several): their aircraft and shadows");
   cmd->add_option("--aircraft", args->aircraft, "The sphere set of --track's aircraft (as shade)")->capture_default_str();
   cmd->add_option("--track-altitude", args->altitude, "--track's altitude: gnss | pressure | agl-offset=M")->capture_default_str();
   cmd->add_option("--exaggeration", args->exaggeration, "Vertical exaggeration of the drawn terrain")->capture_default_str();

@@ -25,7 +25,6 @@
 #include "app/view/window/screenshot.h"
 #include "app/view/window/view_script.h"
 #include "app/view/window/viewer_panel.h"
-#include "flight/track_reader.h"
 #include "gpu/gpu_renderer.h"
 #include "shading/quality.h"
 #include "shading/time_series.h"
@@ -217,15 +216,8 @@ void Viewer::fit_to_gpu() {
 
 void Viewer::load_aircraft() {
   if (o_.tracks.empty()) return;
-  std::vector<flight::Track> tracks;
-  std::string source = "--track";
-  for (const std::string& path : o_.tracks) {
-    std::vector<flight::Track> read = flight::read_track_file(path);
-    tracks.insert(tracks.end(), read.begin(), read.end());
-    source += " '" + path + "'";
-  }
   try {
-    aircraft_.emplace(tracks, source, o_.aircraft, parse_altitude_arg(o_.altitude), field_);
+    aircraft_.emplace(o_.tracks, o_.aircraft, parse_altitude_arg(o_.altitude), field_);
   } catch (const std::invalid_argument& e) {
     note(std::string(e.what()) + "; the viewer runs without aircraft");
     return;

@@ -145,6 +145,8 @@ class Tmpfs {
   bool resize(const std::string& size) {
     return ::mount("tmpfs", at_.c_str(), "tmpfs", MS_REMOUNT, ("size=" + size).c_str()) == 0;
   }
+  // Root writes anywhere except on a read-only file system.
+  bool make_read_only() { return ::mount("tmpfs", at_.c_str(), "tmpfs", MS_REMOUNT | MS_RDONLY, nullptr) == 0; }
 
  private:
   fs::path at_;

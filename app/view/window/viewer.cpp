@@ -188,7 +188,7 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!o.camera_log.empty()) {
     camera_log_.open(o.camera_log);
     if (!camera_log_) throw std::invalid_argument("--camera-log '" + o.camera_log + "' cannot be written");
-    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms";
+    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms,horizons_computed";
     for (int k = 0; k < 16; ++k) camera_log_ << ",vp" << k;
     camera_log_ << "\n";
   }
@@ -369,8 +369,9 @@ void Viewer::log_camera(int k, const sv::ViewFrame& f, int width, int height) {
   if (!camera_log_) return;
   const glm::dmat4 vp = f.camera.proj * f.camera.view;
   char line[128];
-  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f", k, timeline_->time(), f.camera.eye.x,
-                f.camera.eye.y, f.camera.eye.z, width, height, info_.timings.shading_ms);
+  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f,%d", k, timeline_->time(), f.camera.eye.x,
+                f.camera.eye.y, f.camera.eye.z, width, height, info_.timings.shading_ms,
+                info_.timings.horizons_reused ? 0 : 1);
   camera_log_ << line;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) {

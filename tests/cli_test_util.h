@@ -19,8 +19,8 @@ struct Run {
   std::string out;  // stdout (and stderr when merged)
 };
 
-inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
-  const std::string cmd = std::string(SKYLIT_BINARY) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
+// A shell command line; its stdout.
+inline Run run_shell(const std::string& cmd) {
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return {-1, ""};
   std::string out;
@@ -29,6 +29,10 @@ inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
   while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
   const int raw = pclose(pipe);
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
+  return run_shell(std::string(SKYLIT_BINARY) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null"));
 }
 
 // An output raster as the CLI wrote it, read back through GDAL: size, type of band 1,

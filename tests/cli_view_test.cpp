@@ -10,7 +10,6 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
-#include <ogr_spatialref.h>
 
 #include <cmath>
 #include <fstream>
@@ -36,16 +35,8 @@ std::string missing_xvfb() {
 
 // skylit-view in a fresh Xvfb server; stdout and stderr merged. `env`: variables for it.
 skylit::testing::Run run_view(const std::string& args, const std::string& env = "") {
-  const std::string cmd = env + " xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(SKYLIT_VIEW_BINARY) + " " +
-                          args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return {-1, ""};
-  std::string out;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-  const int raw = pclose(pipe);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  return run_shell(env + " xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(SKYLIT_VIEW_BINARY) + " " + args +
+                   " 2>&1");
 }
 
 std::string write_text(const std::string& path, const std::string& text) {
@@ -104,13 +95,7 @@ TEST(ViewWindow, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   const std::string dem = terrain::testing::make_raster(dir.file("flat.tif"), spec);
   terrain::HeightField flat(side, side, dx);
   for (float& h : flat.heights) h = static_cast<float>(ground);
-  flat.georef.geotransform = spec.gt;
-  OGRSpatialReference srs;
-  srs.importFromEPSG(32632);
-  char* wkt = nullptr;
-  srs.exportToWkt(&wkt);
-  flat.georef.crs_wkt = wkt;
-  CPLFree(wkt);
+  flat.georef = terrain::testing::epsg_georef(32632, spec.gt);
 
   // The spheres' centre and the sun at t; the shadow: the ray from it away from the sun
   // meets z = 500.
@@ -271,16 +256,10 @@ TEST(ViewWindow, BrushChangesTheTerrainUnderTheClick) {
 }
 
 TEST(ViewWindow, NoDisplayPointsToRender) {
-  const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SKYLIT_BINARY) +
-                          " view --synthetic --time 2026-06-21T10:00:00Z 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buf[1024];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-  const int raw = pclose(pipe);
-  EXPECT_EQ(WEXITSTATUS(raw), 1) << out;
+  const skylit::testing::Run r = run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SKYLIT_BINARY) +
+                                           " view --synthetic --time 2026-06-21T10:00:00Z 2>&1");
+  const std::string& out = r.out;
+  EXPECT_EQ(r.status, 1) << out;
   EXPECT_NE(out.find("skylit render"), std::string::npos) << out;
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
 }

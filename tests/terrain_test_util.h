@@ -153,19 +153,22 @@ class Tmpfs {
   bool mounted_ = false;
 };
 
-// The georeference of RasterSpec's default grid: 30 m UTM 11N texels from (500000, 4000000).
-inline GeoReference utm_georef() {
+// A georeference in EPSG `epsg` with geotransform `gt`.
+inline GeoReference epsg_georef(int epsg, const std::array<double, 6>& gt) {
   GeoReference g;
   g.has_geotransform = true;
-  g.geotransform = {500000, 30, 0, 4000000, 0, -30};
+  g.geotransform = gt;
   OGRSpatialReference srs;
-  srs.importFromEPSG(32611);
+  srs.importFromEPSG(epsg);
   char* wkt = nullptr;
   srs.exportToWkt(&wkt);
   g.crs_wkt = wkt;
   CPLFree(wkt);
   return g;
 }
+
+// The georeference of RasterSpec's default grid: 30 m UTM 11N texels from (500000, 4000000).
+inline GeoReference utm_georef() { return epsg_georef(32611, {500000, 30, 0, 4000000, 0, -30}); }
 
 inline std::string shared_dem(const std::string& name) { return std::string(SKYLIT_SHARED_DIR) + "/dem/" + name; }
 

@@ -199,14 +199,8 @@ TEST(WebMercator, NativeZoomRule) {
   // A 4326 grid at the equator whose pixel is exactly z 5's ground pixel: native 5, and
   // a hair coarser still 5, a hair finer 6.
   HeightField f(8, 8, 1.0);
-  OGRSpatialReference wgs;
-  wgs.importFromEPSG(4326);
-  char* wkt = nullptr;
-  wgs.exportToWkt(&wkt);
-  f.georef.crs_wkt = wkt;
-  CPLFree(wkt);
+  f.georef = skylit::terrain::testing::epsg_georef(4326, {-0.1, 0.025, 0, 0.1, 0, -0.025});
   f.georef.geographic = true;
-  f.georef.geotransform = {-0.1, 0.025, 0, 0.1, 0, -0.025};
   const double z5 = 156543.03392804097 / 32;  // cos 0 = 1
   for (auto [spacing, zoom] : {std::pair{z5, 5}, std::pair{z5 * 1.001, 5}, std::pair{z5 * 0.999, 6}}) {
     f.dy = spacing;

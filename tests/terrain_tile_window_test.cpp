@@ -333,13 +333,7 @@ TEST(TileWindow, ErrorsAreOneLine) {
     EXPECT_NE(what.find("no CRS"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos);
   }
-  OGRSpatialReference utm;
-  utm.importFromEPSG(32611);
-  char* wkt = nullptr;
-  utm.exportToWkt(&wkt);
-  f.georef.crs_wkt = wkt;
-  CPLFree(wkt);
-  f.georef.geotransform = {394000, 30, 0, 3798000, 0, -30};
+  f.georef = skylit::terrain::testing::epsg_georef(32611, {394000, 30, 0, 3798000, 0, -30});
   const TileWindowSource s(f);
   EXPECT_THROW(s.window({13, 1407, 3263, 1406, 3263}), std::invalid_argument);  // empty range
   EXPECT_THROW(s.window({2, 0, 0, 4, 0}), std::invalid_argument);               // beyond zoom 2

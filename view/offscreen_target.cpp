@@ -39,16 +39,19 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-std::vector<std::uint8_t> OffscreenTarget::read_rgb() const {
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width_) * height_ * 3);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+std::vector<std::uint8_t> read_framebuffer_rgb(std::uint32_t fbo, int width, int height) {
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  if (fbo == 0) glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-  const std::size_t row = static_cast<std::size_t>(width_) * 3;
-  for (int j = 0; j < height_ / 2; ++j)
-    std::swap_ranges(rgb.begin() + j * row, rgb.begin() + (j + 1) * row, rgb.begin() + (height_ - 1 - j) * row);
-  gpu::throw_on_gl_error("OffscreenTarget::read_rgb");
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+  const std::size_t row = static_cast<std::size_t>(width) * 3;
+  for (int j = 0; j < height / 2; ++j)
+    std::swap_ranges(rgb.begin() + j * row, rgb.begin() + (j + 1) * row, rgb.begin() + (height - 1 - j) * row);
+  gpu::throw_on_gl_error("read_framebuffer_rgb");
   return rgb;
 }
+
+std::vector<std::uint8_t> OffscreenTarget::read_rgb() const { return read_framebuffer_rgb(fbo_, width_, height_); }
 
 }  // namespace skylit::view

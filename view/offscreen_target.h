@@ -7,6 +7,10 @@
 
 namespace skylit::view {
 
+// RGB8 of framebuffer `fbo` (0: the window's back buffer), the top row first (GL's rows
+// start at the bottom).
+std::vector<std::uint8_t> read_framebuffer_rgb(std::uint32_t fbo, int width, int height);
+
 class OffscreenTarget {
  public:
   // Throws std::invalid_argument beyond GL_MAX_RENDERBUFFER_SIZE or for a side < 1.

@@ -46,6 +46,11 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration) {
   };
 }
 
+CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration) {
+  const double x = 0.5 * (field.width - 1) * field.mean_dx(), y = -0.5 * (field.height - 1) * field.dy;
+  return {{x, y, ground_of(field, exaggeration)(x, y)}, 0.0};
+}
+
 ViewCamera perspective_camera(const CameraPose& pose, const terrain::HeightField& field, int width, int height,
                               double exaggeration, std::span<const blockers::Sphere> bodies, double fovy_deg) {
   const double ground = ground_of(field, exaggeration)(pose.eye.x, pose.eye.y);

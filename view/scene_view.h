@@ -41,6 +41,10 @@ ViewCamera ortho_nadir_camera(const terrain::HeightField& field, double exaggera
 // the edges: what keeps cameras above the ground.
 GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
 
+// The field's centre on its (exaggerated) ground, heading north: what the cameras aim
+// at with no aircraft to follow.
+CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration);
+
 struct ViewFrame {
   shading::FrameInputs shading;  // the sun and sky, the aircraft's spheres, exposure
   ViewCamera camera;

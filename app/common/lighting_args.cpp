@@ -2,6 +2,8 @@
 
 #include "terrain/geolocation.h"
 
+#include <stdexcept>
+
 namespace skylit::app {
 
 void add_lighting_options(CLI::App& cmd, LightingArgs& args, const std::string& time_help) {
@@ -45,6 +47,13 @@ std::optional<sky::Observer> dem_place(const terrain::HeightField& field) {
   const auto at = terrain::grid_centre_lat_lon(field.georef, field.width, field.height);
   if (!at) return std::nullopt;
   return sky::Observer{at->latitude_deg, at->longitude_deg, field.at(field.width / 2, field.height / 2)};
+}
+
+sky::Observer sun_place(const shading::LightingRequest& request, const terrain::HeightField& field) {
+  if (request.latitude_deg && request.longitude_deg)
+    return sky::Observer{*request.latitude_deg, *request.longitude_deg, request.height_m};
+  if (const std::optional<sky::Observer> centre = dem_place(field)) return *centre;
+  throw std::invalid_argument("the DEM has no CRS to place the sun: give --lat and --lon");
 }
 
 }  // namespace skylit::app

@@ -36,4 +36,8 @@ bool sky_only_default(const LightingArgs& args);
 // The DEM's centre (WGS 84) and height there, for the sun's position; nullopt without a CRS.
 std::optional<sky::Observer> dem_place(const terrain::HeightField& field);
 
+// Where a clock's sun is seen from: the request's --lat/--lon (at its height), else the
+// DEM's centre. Throws std::invalid_argument (one line) when there is neither.
+sky::Observer sun_place(const shading::LightingRequest& request, const terrain::HeightField& field);
+
 }  // namespace skylit::app

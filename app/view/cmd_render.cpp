@@ -103,12 +103,7 @@ int run_render(const RenderArgs& a) {
   so.frames = frames;
   std::unique_ptr<FrameSink> sink = open_frame_sink(a.output, so);
 
-  std::optional<sky::Observer> place;
-  if (a.light.request.latitude_deg && a.light.request.longitude_deg)
-    place = sky::Observer{*a.light.request.latitude_deg, *a.light.request.longitude_deg, a.light.request.height_m};
-  else
-    place = dem_place(field);
-  if (!place) throw std::invalid_argument("the DEM has no CRS to place the sun: give --lat and --lon");
+  const sky::Observer place = sun_place(a.light.request, field);
 
   gpu::GpuRenderer renderer;
   shading::ProductOptions options;
@@ -117,9 +112,6 @@ int run_render(const RenderArgs& a) {
   sv::OffscreenTarget target(width, height);
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
   if (mode) rig.set_mode(*mode);
-  const glm::dvec3 centre{0.5 * (field.width - 1) * field.mean_dx(), -0.5 * (field.height - 1) * field.dy,
-                          sv::ground_of(field, a.exaggeration)(0.5 * (field.width - 1) * field.mean_dx(),
-                                                               -0.5 * (field.height - 1) * field.dy)};
   if (!a.quiet)
     std::cerr << "skylit: " << frames << " frames " << width << "x" << height << " from "
               << sky::format_utc_time({t0}) << " to " << sky::format_utc_time({t1}) << " on "
@@ -141,7 +133,7 @@ int run_render(const RenderArgs& a) {
       frame.camera = sv::ortho_nadir_camera(field, a.exaggeration);
       frame.draw_bodies = false;
     } else {
-      sv::CameraTarget aim{centre, 0.0};
+      sv::CameraTarget aim = sv::field_centre_target(field, a.exaggeration);
       if (aircraft)
         if (const auto pose = aircraft->pose_at(0, t))
           aim = {pose->position * glm::dvec3(1.0, 1.0, a.exaggeration), pose->attitude.heading_deg};

@@ -25,6 +25,31 @@
 extern char** environ;
 
 namespace skylit::app::view {
+
+void check_folder(const std::filesystem::path& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw std::invalid_argument(what + " '" + path.string() + "': the folder '" + dir.string() + "' does not exist");
+}
+
+void check_absent(const std::filesystem::path& path, bool overwrite, const std::string& what) {
+  std::error_code ec;
+  if (!overwrite && std::filesystem::exists(path, ec))
+    throw std::invalid_argument(what + " '" + path.string() + "' exists (--overwrite replaces it)");
+}
+
+void write_rgb_png(const std::string& path, int width, int height, std::span<const std::uint8_t> rgb, bool overwrite) {
+  terrain::RasterWriteOptions w;
+  w.format = "PNG";
+  w.layout = terrain::SampleLayout::PixelInterleaved;
+  w.overwrite = overwrite;
+  terrain::GeoReference none;
+  none.has_geotransform = false;
+  terrain::write_raster(path, none, width, height, 3, rgb, w);
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -32,19 +57,6 @@ namespace fs = std::filesystem;
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-void check_folder(const fs::path& path) {
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw std::invalid_argument("output '" + path.string() + "': the folder '" + dir.string() + "' does not exist");
-}
-
-void check_absent(const fs::path& path, bool overwrite) {
-  std::error_code ec;
-  if (!overwrite && fs::exists(path, ec))
-    throw std::invalid_argument("output '" + path.string() + "' exists (--overwrite replaces it)");
 }
 
 // --- PNG frames -------------------------------------------------------------------
@@ -58,13 +70,7 @@ class PngFrames final : public FrameSink {
     for (int k = 0; k < o.frames; ++k) check_absent(frame_path(pattern_, k), o.overwrite);
   }
   void write(std::span<const std::uint8_t> rgb) override {
-    terrain::RasterWriteOptions w;
-    w.format = "PNG";
-    w.layout = terrain::SampleLayout::PixelInterleaved;
-    w.overwrite = options_.overwrite;
-    terrain::GeoReference none;
-    none.has_geotransform = false;
-    terrain::write_raster(frame_path(pattern_, next_++), none, options_.width, options_.height, 3, rgb, w);
+    write_rgb_png(frame_path(pattern_, next_++), options_.width, options_.height, rgb, options_.overwrite);
   }
   void finish() override {}
   std::string description() const override {

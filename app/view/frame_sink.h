@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <string>
@@ -30,6 +31,13 @@ class FrameSink {
   // "frames/f_%05d.png (PNG frames)", "flight.mp4 (H.264, ffmpeg)".
   virtual std::string description() const = 0;
 };
+
+// Throw std::invalid_argument with one line ("<what> 'PATH': …") when PATH's folder is
+// missing, or PATH exists and overwrite is off.
+void check_folder(const std::filesystem::path& path, const std::string& what = "output");
+void check_absent(const std::filesystem::path& path, bool overwrite, const std::string& what = "output");
+// An RGB8 image (rows top first) as a PNG without georeferencing.
+void write_rgb_png(const std::string& path, int width, int height, std::span<const std::uint8_t> rgb, bool overwrite);
 
 // Throws std::invalid_argument with one line: an unknown extension, a PNG name without
 // or with a bad %d, a missing folder, an existing output without overwrite, odd sides

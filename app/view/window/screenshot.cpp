@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "terrain/raster_writer.h"
+#include "app/view/frame_sink.h"
 #include "view/offscreen_target.h"
 
 namespace skylit::app::view::window {
@@ -43,11 +43,8 @@ RgbImage render_tiled(sv::SceneView& scene, const sv::ViewFrame& frame, int widt
 
 void check_screenshot_path(const std::string& path, bool overwrite) {
   const fs::path p(path);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw std::invalid_argument("screenshot '" + path + "': the folder '" + dir.string() + "' does not exist");
-  if (!overwrite && fs::exists(p, ec)) throw std::invalid_argument("screenshot '" + path + "' exists (--overwrite replaces it)");
+  check_folder(p, "screenshot");
+  check_absent(p, overwrite, "screenshot");
   std::string ext = p.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext != ".png") throw std::invalid_argument("screenshot '" + path + "': only .png is written");
@@ -55,13 +52,7 @@ void check_screenshot_path(const std::string& path, bool overwrite) {
 
 void write_screenshot(const std::string& path, const RgbImage& image, bool overwrite) {
   check_screenshot_path(path, overwrite);
-  terrain::RasterWriteOptions w;
-  w.format = "PNG";
-  w.layout = terrain::SampleLayout::PixelInterleaved;
-  w.overwrite = overwrite;
-  terrain::GeoReference none;
-  none.has_geotransform = false;
-  terrain::write_raster(path, none, image.width, image.height, 3, image.rgb, w);
+  write_rgb_png(path, image.width, image.height, image.rgb, overwrite);
 }
 
 std::string default_screenshot_name() {

@@ -31,6 +31,7 @@
 #include "terrain/brush.h"
 #include "terrain/field_coarsening.h"
 #include "view/camera.h"
+#include "view/offscreen_target.h"
 #include "view/scene_view.h"
 #include "view/timeline.h"
 #include "view/trail_draw.h"
@@ -102,9 +103,8 @@ class Viewer {
 
   ViewerOptions o_;
   terrain::HeightField field_;
-  std::optional<sky::Observer> place_;
+  sky::Observer place_;
   std::optional<shade::TrackedAircraft> aircraft_;
-  std::string tracks_summary_;
   GlfwWindow window_;
   gpu::GpuRenderer renderer_;
   shading::ProductOptions options_;
@@ -147,12 +147,10 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!mode) throw std::invalid_argument("--camera '" + o.camera + "' is not follow, orbit or free");
   if (!o.script.empty()) script_ = ViewScript::read(o.script);
   frame_s_ = (!o.script.empty() || o.frames > 0) ? 1.0 / o.fps : 0.0;
-  place_ = o.light.request.latitude_deg && o.light.request.longitude_deg
-               ? std::optional<sky::Observer>(sky::Observer{*o.light.request.latitude_deg,
-                                                            *o.light.request.longitude_deg, o.light.request.height_m})
-               : dem_place(field_);
-  if (!place_) throw std::invalid_argument("the DEM has no CRS to place the sun: give --lat and --lon");
+  place_ = sun_place(o.light.request, field_);
 
+  shading::apply_quality(*q, options_);
+  options_.shaded.tone = tone_curve(o.light);
   fit_to_gpu();
   load_aircraft();
   double t0 = 0.0;
@@ -164,7 +162,7 @@ Viewer::Viewer(const ViewerOptions& o)
   } else {
     if (o.light.request.time.empty())
       throw std::invalid_argument("give --time for the sun, or a --track whose clock sets it");
-    const auto [start, end] = local_day(t0, place_->longitude_deg);
+    const auto [start, end] = local_day(t0, place_.longitude_deg);
     timeline_.emplace(start, end);
     timeline_->scrub(t0);
     timeline_->set_playing(o.frames > 0);
@@ -173,8 +171,6 @@ Viewer::Viewer(const ViewerOptions& o)
   while (speed + 1 < static_cast<int>(sv::kPlaybackSpeeds.size()) && sv::kPlaybackSpeeds[speed] < o.speed) ++speed;
   timeline_->set_speed_index(speed);
 
-  shading::apply_quality(*q, options_);
-  options_.shaded.tone = tone_curve(o.light);
   scene_ = std::make_unique<sv::SceneView>(renderer_, field_, options_);
   rig_.set_mode(*mode);
   panel_.camera = static_cast<int>(*mode);
@@ -184,7 +180,6 @@ Viewer::Viewer(const ViewerOptions& o)
   panel_.sky = std::max(0, index_of(kSkyChoices, o.light.request.sky));
   panel_.screenshot_scale = o.screenshot_scale;
   info_.renderer = renderer_.description();
-  info_.tracks = tracks_summary_;
   if (!o.camera_log.empty()) {
     camera_log_.open(o.camera_log);
     if (!camera_log_) throw std::invalid_argument("--camera-log '" + o.camera_log + "' cannot be written");
@@ -201,10 +196,8 @@ void Viewer::note(const std::string& text) {
 
 // A field over what one GPU frame takes is halved until it fits (a coarser level).
 void Viewer::fit_to_gpu() {
-  shading::ProductOptions probe;
-  shading::apply_quality(*shading::parse_quality(o_.quality), probe);
   int halvings = 0;
-  while (!renderer_.fits_field(field_.width, field_.height, shading::Product::Shaded, probe) && field_.width > 2 &&
+  while (!renderer_.fits_field(field_.width, field_.height, shading::Product::Shaded, options_) && field_.width > 2 &&
          field_.height > 2) {
     field_ = terrain::coarsen_by_two(field_);
     ++halvings;
@@ -222,7 +215,7 @@ void Viewer::load_aircraft() {
     note(std::string(e.what()) + "; the viewer runs without aircraft");
     return;
   }
-  tracks_summary_ = aircraft_->summary();
+  info_.tracks = aircraft_->summary();
   // A track wholly outside the DEM is kept on the clock but cannot be seen.
   const double w = (field_.width - 1) * field_.mean_dx(), h = (field_.height - 1) * field_.dy;
   for (std::size_t k = 0; k < aircraft_->tracks(); ++k) {
@@ -329,16 +322,7 @@ void Viewer::build_trails() {
 
 // The window's back buffer with the panel (for the docs and tests of what a person sees).
 void Viewer::window_shot(const std::string& path, int width, int height) {
-  RgbImage image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 3)};
-  std::vector<std::uint8_t> rows(image.rgb.size());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
-  for (int r = 0; r < height; ++r)
-    std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(height - 1 - r) * width * 3, width * 3,
-                image.rgb.begin() + static_cast<std::ptrdiff_t>(r) * width * 3);
-  write_screenshot(path, image, o_.overwrite);
+  write_screenshot(path, {width, height, sv::read_framebuffer_rgb(0, width, height)}, o_.overwrite);
   if (!o_.quiet) std::cerr << "skylit-view: wrote " << path << " (the window, " << width << "x" << height << ")\n";
 }
 
@@ -356,8 +340,7 @@ sv::ViewFrame Viewer::make_frame() {
   if (aircraft_) frame.shading.spheres = aircraft_->spheres_at(t);
   frame.style.tone = options_.shaded.tone;
   frame.style.exaggeration = exaggeration_;
-  const glm::dvec3 centre{0.5 * (field_.width - 1) * field_.mean_dx(), -0.5 * (field_.height - 1) * field_.dy, 0.0};
-  sv::CameraTarget aim{{centre.x, centre.y, sv::ground_of(field_, exaggeration_)(centre.x, centre.y)}, 0.0};
+  sv::CameraTarget aim = sv::field_centre_target(field_, exaggeration_);
   if (aircraft_)
     if (const auto pose = aircraft_->pose_at(followed_, t))
       aim = {pose->position * glm::dvec3(1.0, 1.0, exaggeration_), pose->attitude.heading_deg};

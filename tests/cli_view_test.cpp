@@ -264,6 +264,16 @@ TEST(ViewWindow, NoDisplayPointsToRender) {
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
 }
 
+TEST(ViewWindow, ABadScreenshotPathFailsBeforeAnyFrame) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  const skylit::testing::Run r = run_view("--synthetic --time 2026-06-21T10:00:00Z --frames 1 --screenshot " +
+                                          dir.file("missing/shot.png") + " --camera-log " + dir.file("c.csv"));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("the folder"), std::string::npos) << r.out;
+  EXPECT_TRUE(read_camera_log(dir.file("c.csv")).empty()) << "no frame was drawn";
+}
+
 TEST(ViewWindow, BadScriptFailsInOneLine) {
   SKYLIT_REQUIRE(missing_xvfb());
   ScratchDir dir;

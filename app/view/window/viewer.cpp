@@ -140,6 +140,7 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!(o.exaggeration > 0.0) || o.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
   if (!(o.fps > 0.0)) throw std::invalid_argument("--fps must be > 0");
   if (o.frames > 0 && o.screenshot.empty()) throw std::invalid_argument("--frames needs --screenshot FILE");
+  if (!o.screenshot.empty()) check_screenshot_path(o.screenshot, o.overwrite);
   if (o.screenshot_scale < 1 || o.screenshot_scale > 16) throw std::invalid_argument("--screenshot-scale must be 1 to 16");
   const std::optional<shading::Quality> q = shading::parse_quality(o.quality);
   if (!q) throw std::invalid_argument("--quality '" + o.quality + "' is not fast, default or high");

@@ -83,6 +83,20 @@ sv::CameraInput camera_input(const InputState& input) {
   return in;
 }
 
+// Every check of the options that needs neither the DEM nor a window, so bad input
+// fails in one line before either is opened.
+const ViewerOptions& checked(const ViewerOptions& o) {
+  if (!(o.exaggeration > 0.0) || o.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
+  if (!(o.fps > 0.0)) throw std::invalid_argument("--fps must be > 0");
+  if (o.frames > 0 && o.screenshot.empty()) throw std::invalid_argument("--frames needs --screenshot FILE");
+  if (!o.screenshot.empty()) check_screenshot_path(o.screenshot, o.overwrite);
+  if (o.screenshot_scale < 1 || o.screenshot_scale > 16) throw std::invalid_argument("--screenshot-scale must be 1 to 16");
+  if (!shading::parse_quality(o.quality))
+    throw std::invalid_argument("--quality '" + o.quality + "' is not fast, default or high");
+  if (!sv::parse_camera_mode(o.camera)) throw std::invalid_argument("--camera '" + o.camera + "' is not follow, orbit or free");
+  return o;
+}
+
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& o);
@@ -102,6 +116,7 @@ class Viewer {
   void window_shot(const std::string& path, int width, int height);
 
   ViewerOptions o_;
+  ViewScript script_;  // read before the window opens
   terrain::HeightField field_;
   sky::Observer place_;
   std::optional<shade::TrackedAircraft> aircraft_;
@@ -112,7 +127,6 @@ class Viewer {
   double exaggeration_;
   sv::CameraRig rig_;
   std::optional<sv::Timeline> timeline_;
-  ViewScript script_;
   InputState input_;
   PanelState panel_;
   PanelInfo info_;
@@ -130,23 +144,16 @@ class Viewer {
 };
 
 Viewer::Viewer(const ViewerOptions& o)
-    : o_(o),
+    : o_(checked(o)),
+      script_(o.script.empty() ? ViewScript() : ViewScript::read(o.script)),
       field_(load_dems_or_scene(o.inputs, o.synthetic, o.scene_size, o.seed, o.quiet ? nullptr : &std::cerr,
                                 "skylit-view")),
       window_(o.width, o.height, "skylit", o.script.empty() && o.frames == 0),
       renderer_(std::make_unique<gpu::HeadlessContext>(gpu::AdoptCurrentContext{"GLFW window"})),
       exaggeration_(o.exaggeration),
       rig_([this](double x, double y) { return sv::ground_of(field_, exaggeration_)(x, y); }) {
-  if (!(o.exaggeration > 0.0) || o.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
-  if (!(o.fps > 0.0)) throw std::invalid_argument("--fps must be > 0");
-  if (o.frames > 0 && o.screenshot.empty()) throw std::invalid_argument("--frames needs --screenshot FILE");
-  if (!o.screenshot.empty()) check_screenshot_path(o.screenshot, o.overwrite);
-  if (o.screenshot_scale < 1 || o.screenshot_scale > 16) throw std::invalid_argument("--screenshot-scale must be 1 to 16");
   const std::optional<shading::Quality> q = shading::parse_quality(o.quality);
-  if (!q) throw std::invalid_argument("--quality '" + o.quality + "' is not fast, default or high");
   const std::optional<sv::CameraMode> mode = sv::parse_camera_mode(o.camera);
-  if (!mode) throw std::invalid_argument("--camera '" + o.camera + "' is not follow, orbit or free");
-  if (!o.script.empty()) script_ = ViewScript::read(o.script);
   frame_s_ = (!o.script.empty() || o.frames > 0) ? 1.0 / o.fps : 0.0;
   place_ = sun_place(o.light.request, field_);
 

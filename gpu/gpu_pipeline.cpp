@@ -27,6 +27,7 @@
 #include "gpu/resident_field.h"
 #include "gpu/shading_setup.h"
 #include "gpu/timer.h"
+#include "gpu/visibility_refresh.h"
 #include "gpu/wedge_fourier.h"
 #include "shading/horizon/azimuth.h"
 #include "shading/horizon/horizon_march.h"
@@ -413,6 +414,10 @@ struct GpuProductPipeline::Impl {
   Buffer vis, kept_horizons;
   bool keep_vis = false, vis_valid = false;
   std::uint64_t vis_field_id = 0, vis_revision = 0;
+  // Which kept texels are current for vis_revision, and the texels per compute() that
+  // catch up after an edit (0: the edit recomputes all).
+  VisibilityRefresh refresh;
+  std::size_t refresh_budget = 0;
   int vis_rows = 0;
   int frames = 0;  // compute() calls since the visibility was last dropped
   double compile_ms = 0.0;  // kernels compiled since the last compute() began
@@ -479,6 +484,7 @@ struct GpuProductPipeline::Impl {
     return sweep_ms + sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
   }
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
+  std::uint64_t pyramid_field_id = 0, pyramid_revision = 0;  // the field it was built from
   // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
   // only its changed rows; the schedules only when they change.
   ResidentField field;
@@ -702,6 +708,8 @@ void GpuProductPipeline::set_exposure(double exposure) {
 
 void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
 
+void GpuProductPipeline::set_refresh_budget(std::size_t texels_per_frame) { mImpl->refresh_budget = texels_per_frame; }
+
 void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) {
   if (!mImpl->blockers) throw std::logic_error("GpuProductPipeline::set_spheres: the pipeline was built without blockers");
   mImpl->spheres.assign(spheres.begin(), spheres.end());
@@ -794,8 +802,21 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // visibility are skipped), or (keeping) this one's, for the computes after it.
   const bool vis_product = needs_visibility(mProduct);
   // A blocked frame keeps the floored horizon slopes too (the spheres' horizon cull).
-  const bool reuse = vis_product && k.vis_valid && k.vis_field_id == field.id.value() && k.vis_revision == field.revision;
-  bool keep = vis_product && !reuse && (k.keep_vis || k.frames > 0);
+  const bool kept_field = vis_product && k.vis_valid && k.vis_field_id == field.id.value();
+  // Incremental: the texels to recompute into the kept visibility, the rest read from it.
+  std::vector<terrain::PixelRect> refresh_rects;
+  if (kept_field && mOptions.subsample == 1) {
+    const terrain::PixelRect& d = field.last_dirty;
+    if (k.refresh_budget > 0 && field.revision == k.vis_revision + 1 && !d.empty() && d.x0 >= 0 && d.y0 >= 0 &&
+        d.x1() <= w && d.y1() <= h) {
+      refresh_rects = {k.refresh.edit(d, kRefreshMarginTexels)};
+    } else if (field.revision == k.vis_revision && !k.refresh.complete()) {
+      refresh_rects = k.refresh.refine(k.refresh_budget > 0 ? k.refresh_budget : texels);
+    }
+  }
+  const bool incremental = !refresh_rects.empty();
+  const bool reuse = kept_field && k.vis_revision == field.revision && !incremental;
+  bool keep = vis_product && !reuse && (k.keep_vis || k.frames > 0 || incremental);
   if (keep) {
     const std::size_t vis_bytes = texels * static_cast<std::size_t>(k.vis_rows) * sizeof(float);
     const std::size_t horizon_bytes = k.blockers ? texels * static_cast<std::size_t>(bands) * sizeof(float) : 0;
@@ -822,7 +843,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   int steps_count = 0;
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
-  const bool sweep = !reuse && shading::uses_sweep(field, mOptions);  // as the reference decides
+  // As the reference decides; an incremental refresh marches (the sweep is not local).
+  const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions);
   if (!reuse) k.last_compute_swept = sweep;
   if (!reuse && !mOptions.exact && !sweep) {
     const horizon::MarchSchedule steps = horizon::march_schedule(field, mOptions.march);
@@ -831,13 +853,17 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       throw std::runtime_error("GPU pipeline: the march has " + std::to_string(steps_count) + " steps, over the kernel's " +
                                std::to_string(kMaxMarchSteps));
     first_distance = steps.distances.front();
-    if (k.pyramid) {
-      const auto pyramid_start = Clock::now();
-      t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, horizon::march_pyramid_options(mOptions.march),
-                                           !bilinear_levels(mOptions.march));
+    if (k.pyramid) {  // rebuilt when the field changed (not for a refinement's frames)
+      if (k.pyramid_field_id != field.id.value() || k.pyramid_revision != field.revision) {
+        const auto pyramid_start = Clock::now();
+        t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, horizon::march_pyramid_options(mOptions.march),
+                                             !bilinear_levels(mOptions.march));
+        k.pyramid_field_id = field.id.value();
+        k.pyramid_revision = field.revision;
+        glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
+        t.pyramid_ms = ms_since(pyramid_start);
+      }
       z_bound = static_cast<float>(horizon::march_exit_height_bound(k.pyramid->max_coeff()));
-      glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
-      t.pyramid_ms = ms_since(pyramid_start);
     } else {  // bilinear level-0 heights
       z_bound = static_cast<float>(horizon::march_exit_height_bound(field.heights));
     }
@@ -936,6 +962,9 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   const ComputeProgram& products =
       k.products_kernel(mOptions, sweep, one_dx, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
+  // A swept field refreshed after an edit marches: its kernels compiled now, not at the edit.
+  const bool may_refresh = keep && sweep && k.refresh_budget > 0 && mOptions.subsample == 1;
+  if (may_refresh) k.products_kernel(mOptions, false, one_dx, Impl::kKeepVis);
   if (reuse || keep) {
     k.vis.bind_storage(kVis);
     if (k.blockers) k.kept_horizons.bind_storage(kKeptHorizons);
@@ -953,7 +982,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute
     t.sweep_ms = ms_since(sweep_start);
     far.bind_sampler(kFar);
-  } else if (!reuse && one_dx && !k.march_one_dx) {
+  }
+  if ((may_refresh || (!reuse && !sweep)) && one_dx && !k.march_one_dx) {
     GlslDefines d = k.march_defines;
     d.set("ONE_DX", 1);
     k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
@@ -996,53 +1026,88 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   }
   std::vector<float> chunk_values;
   GpuTimer march_timer, products_timer;
-  for (int r0 = 0; r0 < h; r0 += chunk) {
-    const int rows = std::min(chunk, h - r0);
-    for (const ComputeProgram* p : {march, &products}) {
+  // Rows r0 … r0 + rows − 1 (≤ chunk), columns c0 … c0 + cols − 1: the march (if any),
+  // the product kernel, and the output block into the field's bands.
+  auto run_block = [&](const ComputeProgram* march_kernel, const ComputeProgram& product_kernel, int r0, int rows,
+                       int c0, int cols) {
+    for (const ComputeProgram* p : {march_kernel, &product_kernel}) {
       if (!p) continue;
       p->set_uniform("row_offset", r0);
       p->set_uniform("chunk_rows", chunk);
+      p->set_uniform("col_offset", c0);
+      p->set_uniform("col_count", cols);
     }
-    if (s > 1 && march) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
-      const auto [c0, c1] = coarse_span(r0, rows);
-      march->set_uniform("coarse_row_offset", c0);
-      march->set_uniform("coarse_rows", c1 - c0 + 1);
-      march->set_uniform("march_pass", 0);
+    if (s > 1 && march_kernel) {  // pass 0: the coarse rows bracketing the chunk; pass 1 below
+      const auto [y0, y1] = coarse_span(r0, rows);
+      march_kernel->set_uniform("coarse_row_offset", y0);
+      march_kernel->set_uniform("coarse_rows", y1 - y0 + 1);
+      march_kernel->set_uniform("march_pass", 0);
       {
         ScopedGpuTimer timing(march_timer);
-        march->dispatch_covering(coarse_x.count(), c1 - c0 + 1, bands);
+        march_kernel->dispatch_covering(coarse_x.count(), y1 - y0 + 1, bands);
       }
       t.march_ms += march_timer.elapsed_ms();
-      march->set_uniform("march_pass", 1);
+      march_kernel->set_uniform("march_pass", 1);
     }
-    if (march) {
+    if (march_kernel) {
       {
         ScopedGpuTimer timing(march_timer);
-        march->dispatch_covering(w, rows, bands);
+        march_kernel->dispatch_covering(cols, rows, bands);
       }
       t.march_ms += march_timer.elapsed_ms();
     }
     {
       ScopedGpuTimer timing(products_timer);
-      products.dispatch_covering(w, rows);
+      product_kernel.dispatch_covering(cols, rows);
     }
     t.products_ms += products_timer.elapsed_ms();
-    // Band-major chunk → band-major field, on the GPU or the host.
+    // Band-major chunk → band-major field, on the GPU or the host: whole rows at once.
+    const bool whole_rows = c0 == 0 && cols == w;
+    const std::size_t row_bytes = static_cast<std::size_t>(w) * sizeof(float);
+    auto chunk_at = [&](int b, int j) { return (static_cast<std::size_t>(b) * chunk + (j - r0)) * w + c0; };
+    auto field_at = [&](int b, int j) { return (static_cast<std::size_t>(b) * h + j) * w + c0; };
     if (on_gpu) {
-      const std::size_t row_bytes = static_cast<std::size_t>(w) * sizeof(float);
       for (int b = 0; b < out_bands; ++b)
-        glCopyNamedBufferSubData(output.id(), k.device_out.id(), static_cast<GLintptr>(b * chunk * row_bytes),
-                                 static_cast<GLintptr>((static_cast<std::size_t>(b) * h + r0) * row_bytes),
-                                 static_cast<GLsizeiptr>(rows * row_bytes));
+        for (int j = r0; j < r0 + rows; j += whole_rows ? rows : 1)
+          glCopyNamedBufferSubData(output.id(), k.device_out.id(), static_cast<GLintptr>(chunk_at(b, j) * sizeof(float)),
+                                   static_cast<GLintptr>(field_at(b, j) * sizeof(float)),
+                                   static_cast<GLsizeiptr>(whole_rows ? rows * row_bytes : cols * sizeof(float)));
     } else {
       chunk_values.resize(static_cast<std::size_t>(chunk) * w * out_bands);
       output.download(chunk_values.data(), chunk_values.size() * sizeof(float));
       for (int b = 0; b < out_bands; ++b)
-        std::copy_n(chunk_values.begin() + static_cast<std::ptrdiff_t>(b) * chunk * w,
-                    static_cast<std::size_t>(rows) * w, out.data.begin() + (static_cast<std::ptrdiff_t>(b) * h + r0) * w);
+        for (int j = r0; j < r0 + rows; ++j)
+          std::copy_n(chunk_values.begin() + static_cast<std::ptrdiff_t>(chunk_at(b, j)), cols,
+                      out.data.begin() + static_cast<std::ptrdiff_t>(field_at(b, j)));
     }
-    if (progress) progress(0.99 * (r0 + rows) / h);
+  };
+  const ComputeProgram* reader = incremental ? &k.products_kernel(mOptions, false, one_dx, Impl::kReadVis) : nullptr;
+  if (reader) {  // every texel from the kept visibility, then the refreshed ones recomputed
+    set_grid_uniforms(*reader, field);
+    if (reader->has_uniform("grid_dx")) reader->set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
+    if (reader->has_uniform("first_distance")) reader->set_uniform("first_distance", static_cast<float>(first_distance));
+    if (reader->has_uniform("half_texel_floor")) reader->set_uniform("half_texel_floor", sweep ? 1 : 0);
+    if (k.blockers) k.blockers->bind(*reader);
   }
+  std::size_t refreshed = 0;
+  for (const terrain::PixelRect& r : refresh_rects) refreshed += static_cast<std::size_t>(r.width) * r.height;
+  const std::size_t work = (incremental ? texels : 0) + (incremental ? refreshed : texels);
+  std::size_t done = 0;
+  for (int r0 = 0; r0 < h; r0 += chunk) {
+    const int rows = std::min(chunk, h - r0);
+    if (reader) run_block(nullptr, *reader, r0, rows, 0, w);
+    else run_block(march, products, r0, rows, 0, w);
+    done += static_cast<std::size_t>(rows) * w;
+    if (progress) progress(0.99 * static_cast<double>(done) / static_cast<double>(work));
+  }
+  for (const terrain::PixelRect& r : refresh_rects)
+    for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) {
+      const int rows = std::min(chunk, r.y1() - r0);
+      run_block(march, products, r0, rows, r.x0, r.width);
+      done += static_cast<std::size_t>(rows) * r.width;
+      if (progress) progress(0.99 * static_cast<double>(done) / static_cast<double>(work));
+    }
+  t.refreshed_texels = incremental ? refreshed : reuse ? 0 : texels;
 
   // Stage 4: the output transfer.
   throw_on_gl_error("GpuProductPipeline::compute");
@@ -1062,7 +1127,9 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     k.vis_valid = true;
     k.vis_field_id = field.id.value();
     k.vis_revision = field.revision;
+    if (!incremental) k.refresh.reset(w, h);
   }
+  t.stale_texels = keep || reuse ? k.refresh.stale_texels() : 0;
   if (vis_product) ++k.frames;
   if (progress) progress(1.0);
   t.compile_ms = k.compile_ms;

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "gpu/buffers.h"
+#include "shading/horizon/halo.h"
 #include "shading/products.h"
 #include "shading/renderer.h"
 #include "terrain/height_field.h"
@@ -95,6 +96,20 @@ class GpuProductPipeline {
   // Blocked frames keep no visibility: the spheres' horizon cull reads the horizons.
   void set_spheres(std::span<const blockers::Sphere> spheres);
   void drop_visibility();
+  // Incremental refresh of the kept visibility after an edit (gpu/visibility_refresh.h).
+  // With a budget > 0, the compute() after one edit of a kept field (revision one past the
+  // kept one, its last_dirty inside the grid) recomputes only the edited rectangle grown
+  // by kRefreshMarginTexels, and each later compute() on that revision about `budget`
+  // more texels, nearest the edit first, until every texel is again what a whole march
+  // gives; texels not reached yet keep the visibility of the field before the edit. The
+  // refreshed texels are marched also where the options sweep, since the sweep is not
+  // local: a swept field converges to the march's horizons, which differ from the
+  // sweep's by the two methods' errors (docs/accuracy.md). 0 (the default): the edit's
+  // compute() recomputes the whole field as the options say. Sub-sampled horizons
+  // (subsample > 1) always recompute the whole field.
+  void set_refresh_budget(std::size_t texels_per_frame);
+  // The texels next to an edit whose normals and kernels read it.
+  static constexpr int kRefreshMarginTexels = horizon::kKernelMarginTexels;
 
   // The field stays resident on the GPU until the next call: the same HeightField
   // object after one edit (terrain/editing.h) re-uploads only the edited rows

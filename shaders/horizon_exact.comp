@@ -19,13 +19,17 @@ layout(std430, binding = SIGMA_BINDING) writeonly buffer Sigma { float sigma[]; 
 uniform float max_distance;  // m, with a float-rounding slack added by the host
 uniform int row_offset;      // first row of this dispatch
 uniform int chunk_rows;      // rows of the sigma buffer
+uniform int col_offset;      // first column of this dispatch (an incremental refresh's window)
+uniform int col_count;       // its columns
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x);
+  int i = int(gl_GlobalInvocationID.x) + col_offset;
   int j = int(gl_GlobalInvocationID.y) + row_offset;
   int k = int(gl_GlobalInvocationID.z);
   // Work groups overhang the chunk: rows past it belong to the next one.
-  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows || k >= AZIMUTHS) return;
+  if (i >= grid_width || i - col_offset >= col_count || j >= grid_height || j - row_offset >= chunk_rows ||
+      k >= AZIMUTHS)
+    return;
 
   vec2 u = headings[k];
   float h0 = heightAt(i, j);

@@ -61,6 +61,8 @@ uniform int steps;       // n_v
 uniform float z_bound;   // >= every height the march reads (+inf: no early exit)
 uniform int row_offset;  // first row of this dispatch
 uniform int chunk_rows;  // rows of the sigma buffer
+uniform int col_offset;  // first column of this dispatch (an incremental refresh's window)
+uniform int col_count;   // its columns
 
 #if SUBSAMPLE > 1
 // Sub-sampling (shading::ProductOptions::subsample): raw horizons of the coarse texels
@@ -222,10 +224,11 @@ void main() {
     return;
   }
 #endif
-  int i = int(gl_GlobalInvocationID.x);
+  int i = int(gl_GlobalInvocationID.x) + col_offset;
   int j = int(gl_GlobalInvocationID.y) + row_offset;
   // Work groups overhang the chunk: rows past it belong to the next one.
-  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows || k >= AZIMUTHS) return;
+  if (i >= grid_width || i - col_offset >= col_count || j >= grid_height || j - row_offset >= chunk_rows || k >= AZIMUTHS)
+    return;
   int out_index = (k * chunk_rows + j - row_offset) * grid_width + i;
 #if SUBSAMPLE > 1
   // Pass 1: bilinear from the coarse samples with a non-zero weight; the texel's own

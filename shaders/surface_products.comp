@@ -59,6 +59,8 @@ layout(std430, binding = OUTPUT_BINDING) writeonly buffer Output { float values[
 
 uniform int row_offset;  // first row of this dispatch
 uniform int chunk_rows;  // rows of the sigma and output buffers
+uniform int col_offset;  // first column of this dispatch (an incremental refresh's window)
+uniform int col_count;   // its columns
 
 #if PRODUCT == PRODUCT_HORIZON && !EXACT_MARCH
 uniform float first_distance;  // t1 (m): the multi-resolution march's first distance,
@@ -290,10 +292,10 @@ void applySpheres(float f[SH_COEFFS], inout float vis[SH_COEFFS]) {
 #endif
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x);
+  int i = int(gl_GlobalInvocationID.x) + col_offset;
   int j = int(gl_GlobalInvocationID.y) + row_offset;
   // Work groups overhang the chunk: rows past it belong to the next one.
-  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows) return;
+  if (i >= grid_width || i - col_offset >= col_count || j >= grid_height || j - row_offset >= chunk_rows) return;
   int texel = j * grid_width + i;
   int out_texel = chunkIndex(0, j, i);
   bool valid = ((valid_bytes[texel >> 2] >> (8 * (texel & 3))) & 0xffu) != 0u;

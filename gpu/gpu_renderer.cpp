@@ -109,6 +109,7 @@ GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::Product
   if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
   pipeline.set_exposure(options.shaded.exposure);
   pipeline.keep_visibility(keep_);
+  pipeline.set_refresh_budget(refresh_budget_);
   return pipeline;
 }
 

@@ -39,6 +39,7 @@ class GpuRenderer final : public shading::Renderer {
   void set_options(const shading::ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
+  void set_refresh_budget(std::size_t texels_per_frame) override { refresh_budget_ = texels_per_frame; }
   std::optional<std::string> lacks_blockers(shading::Product product,
                                             const shading::ProductOptions& options) const override;
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
@@ -76,6 +77,7 @@ class GpuRenderer final : public shading::Renderer {
   const terrain::HeightField* field_ = nullptr;
   shading::ProductOptions options_;
   bool keep_ = false;
+  std::size_t refresh_budget_ = 0;
   int frames_ = 0;
   std::deque<Entry> cache_;
   const GpuProductPipeline* last_ = nullptr;

@@ -37,6 +37,10 @@ class AutoRenderer final : public shading::Renderer {
     if (gpu_) gpu_->expect_frames(frames);
     if (reference_) reference_->expect_frames(frames);
   }
+  void set_refresh_budget(std::size_t texels_per_frame) override {
+    refresh_budget_ = texels_per_frame;
+    if (gpu_) gpu_->set_refresh_budget(texels_per_frame);
+  }
   void drop_horizons() override {
     if (gpu_) gpu_->drop_horizons();
     if (reference_) reference_->drop_horizons();
@@ -101,6 +105,7 @@ class AutoRenderer final : public shading::Renderer {
     if (field_) gpu_->set_field(*field_);
     gpu_->set_options(options_);
     gpu_->expect_frames(frames_);
+    gpu_->set_refresh_budget(refresh_budget_);
   }
   shading::Renderer& reference() {
     if (!reference_) {
@@ -119,6 +124,7 @@ class AutoRenderer final : public shading::Renderer {
   const terrain::HeightField* field_ = nullptr;
   shading::ProductOptions options_;
   int frames_ = 1;
+  std::size_t refresh_budget_ = 0;
   bool last_on_gpu_ = false;
   std::string why_reference_;
   const shading::Renderer* last_ = nullptr;

@@ -57,6 +57,11 @@ struct FrameTimings {
   double compile_ms = 0.0;       // kernels compiled for this frame (0 when cached)
   double frame_ms = 0.0;         // the whole frame, read-back included
   bool horizons_reused = false;  // the horizons (or the visibility built from them) were kept
+  // Texels whose horizons (and visibility) this frame computed: all, none (kept), or after
+  // an edit only those an incremental refresh reached (Renderer::set_refresh_budget).
+  std::size_t refreshed_texels = 0;
+  // Texels whose kept visibility is still that of the field before its last edit.
+  std::size_t stale_texels = 0;
 };
 
 class Renderer {
@@ -82,6 +87,11 @@ class Renderer {
   // Forgets the kept horizons and visibility (the kernels stay compiled): the next
   // frame does all its work, as a benchmark of one whole frame needs.
   virtual void drop_horizons() = 0;
+  // After an edit, recompute the edited area at once and about `texels_per_frame` more
+  // texels each frame, nearest first, until the whole field is current (the GPU:
+  // gpu/visibility_refresh.h); 0, the default, recomputes the whole field at the edit.
+  // This default, the reference's, recomputes whole fields whatever the budget.
+  virtual void set_refresh_budget(std::size_t /*texels_per_frame*/) {}
 
   // Why this renderer cannot shade sphere blockers in `product` with these options (one
   // line), or nothing. It refuses such frames with std::invalid_argument rather than

@@ -101,6 +101,8 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   }
   const gpu::GpuFrame& shaded = *shaded_;
   t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
+  t.stale_texels = renderer_.last_timings().stale_texels;
+  t.texels = field_.size();
   terrain_.sync(field_);
   t.shading_ms = lap();
 

@@ -62,6 +62,9 @@ struct ViewTimings {
   double sky_ms = 0.0, terrain_ms = 0.0, bodies_ms = 0.0, total_ms = 0.0;
   std::size_t terrain_nodes = 0;
   bool horizons_reused = false;
+  // Texels whose shading still waits for the refresh after a terrain edit (the
+  // renderer's FrameTimings::stale_texels), of `texels`.
+  std::size_t stale_texels = 0, texels = 0;
 };
 
 class SceneView {

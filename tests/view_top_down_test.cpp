@@ -164,7 +164,7 @@ TEST_F(TopDownTest, AircraftIsDrawnWherePerspectivePutsIt) {
   // ppr · tan(asin(r/d)) pixels. 1000 m up with the sphere 120 m ahead, a near plane
   // from the height alone (500 m) would clip it away.
   terrain::HeightField f(160, 160, 10.0);
-  for (const auto [height, ahead] : {std::pair{150.0, 500.0}, std::pair{1000.0, 120.0}}) {
+  for (const auto& [height, ahead] : {std::pair{150.0, 500.0}, std::pair{1000.0, 120.0}}) {
     const glm::dvec3 eye{800.0, -1300.0, height}, centre{800.0, -1300.0 + ahead, height};
     const double r = 20.0;
     const int size = 256;

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   app.add_option("--track-altitude", o.altitude, "gnss | pressure | agl-offset=M")->capture_default_str();
   app.add_option("--quality", o.quality, "fast | default | high")->capture_default_str();
   app.add_option("--exaggeration", o.exaggeration, "Vertical exaggeration")->capture_default_str();
+  app.add_option("--refresh-frames", o.refresh_frames,
+                 "After a brush edit: shade the edited area at once and the rest of the field over this many frames (0: at once)")
+      ->capture_default_str();
   app.add_option("--camera", o.camera, "follow | orbit | free")->capture_default_str();
   app.add_option("--width", o.width, "Window width")->capture_default_str();
   app.add_option("--height", o.height, "Window height")->capture_default_str();

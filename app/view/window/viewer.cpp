@@ -91,6 +91,7 @@ const ViewerOptions& checked(const ViewerOptions& o) {
   if (o.frames > 0 && o.screenshot.empty()) throw std::invalid_argument("--frames needs --screenshot FILE");
   if (!o.screenshot.empty()) check_screenshot_path(o.screenshot, o.overwrite);
   if (o.screenshot_scale < 1 || o.screenshot_scale > 16) throw std::invalid_argument("--screenshot-scale must be 1 to 16");
+  if (o.refresh_frames < 0 || o.refresh_frames > 1000) throw std::invalid_argument("--refresh-frames must be 0 to 1000");
   if (!shading::parse_quality(o.quality))
     throw std::invalid_argument("--quality '" + o.quality + "' is not fast, default or high");
   if (!sv::parse_camera_mode(o.camera)) throw std::invalid_argument("--camera '" + o.camera + "' is not follow, orbit or free");
@@ -160,6 +161,7 @@ Viewer::Viewer(const ViewerOptions& o)
   shading::apply_quality(*q, options_);
   options_.shaded.tone = tone_curve(o.light);
   fit_to_gpu();
+  if (o.refresh_frames > 0) renderer_.set_refresh_budget((field_.size() + o.refresh_frames - 1) / o.refresh_frames);
   load_aircraft();
   double t0 = 0.0;
   if (!o.light.request.time.empty()) t0 = sky::parse_utc_time(o.light.request.time).unix_seconds;
@@ -191,7 +193,7 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!o.camera_log.empty()) {
     camera_log_.open(o.camera_log);
     if (!camera_log_) throw std::invalid_argument("--camera-log '" + o.camera_log + "' cannot be written");
-    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms,horizons_computed";
+    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms,horizons_computed,stale_texels";
     for (int k = 0; k < 16; ++k) camera_log_ << ",vp" << k;
     camera_log_ << "\n";
   }
@@ -359,10 +361,10 @@ sv::ViewFrame Viewer::make_frame() {
 void Viewer::log_camera(int k, const sv::ViewFrame& f, int width, int height) {
   if (!camera_log_) return;
   const glm::dmat4 vp = f.camera.proj * f.camera.view;
-  char line[128];
-  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f,%d", k, timeline_->time(), f.camera.eye.x,
+  char line[192];
+  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f,%d,%zu", k, timeline_->time(), f.camera.eye.x,
                 f.camera.eye.y, f.camera.eye.z, width, height, info_.timings.shading_ms,
-                info_.timings.horizons_reused ? 0 : 1);
+                info_.timings.horizons_reused ? 0 : 1, info_.timings.stale_texels);
   camera_log_ << line;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) {

@@ -19,6 +19,9 @@ struct ViewerOptions {
   LightingArgs light;  // --time: the clock's start (with a track: a time in it)
   std::string quality = "default";
   double exaggeration = 1.0;
+  // After a brush edit: the edited area is shaded at once and the rest of the field over
+  // this many frames (0: all of it in the edit's frame).
+  int refresh_frames = 32;
   std::string camera = "follow";
   int width = 1280, height = 720;
   double speed = 1.0;  // track seconds per wall second

@@ -38,6 +38,8 @@ void timing_section(const PanelInfo& info) {
   const skylit::view::ViewTimings& p = info.timings;
   ImGui::Text("frame %.1f ms (%.1f fps)", info.frame_ms, info.frame_ms > 0 ? 1000.0 / info.frame_ms : 0.0);
   ImGui::Text("shading %.1f ms%s", p.shading_ms, p.horizons_reused ? "" : " (horizons computed)");
+  if (p.stale_texels > 0 && p.texels > 0)
+    ImGui::Text("after the edit: %.0f%% of the field to refresh", 100.0 * p.stale_texels / p.texels);
   ImGui::Text("sky %.1f  terrain %.1f (%zu patches)  aircraft %.1f ms", p.sky_ms, p.terrain_ms, p.terrain_nodes,
               p.bodies_ms);
 }

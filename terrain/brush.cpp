@@ -23,10 +23,8 @@ void check(const Brush& b, double x, double y) {
     fail("raise/lower strength must be ≥ 0 (got " + std::to_string(b.strength) + " m); use the other mode");
 }
 
-}  // namespace
-
-PixelRect apply_brush(HeightField& f, const Brush& brush, double x, double y) {
-  check(brush, x, y);
+// One application without the revision bump: returns the changed texels' bounding rectangle.
+PixelRect stamp(HeightField& f, const Brush& brush, double x, double y) {
   const double R = brush.radius_m, R2 = R * R;
   // Rows and columns within R, one texel wider than needed: the exact r < R test decides.
   const int j0 = clamp_index(std::floor((-y - R) / f.dy) - 1, 0, f.height);
@@ -92,8 +90,55 @@ PixelRect apply_brush(HeightField& f, const Brush& brush, double x, double y) {
       cx0 = std::min(cx0, i), cx1 = std::max(cx1, i + 1), cy0 = std::min(cy0, j), cy1 = std::max(cy1, j + 1);
     }
   if (cx0 >= cx1) return {};
-  const PixelRect changed{cx0, cy0, cx1 - cx0, cy1 - cy0};
-  f.mark_dirty(changed);
+  return {cx0, cy0, cx1 - cx0, cy1 - cy0};
+}
+
+}  // namespace
+
+PixelRect apply_brush(HeightField& f, const Brush& brush, double x, double y) {
+  check(brush, x, y);
+  const PixelRect changed = stamp(f, brush, x, y);
+  if (!changed.empty()) f.mark_dirty(changed);
+  return changed;
+}
+
+BrushStroke::BrushStroke(const Brush& brush, double spacing_m) : brush_(brush), spacing_(spacing_m) {
+  check(brush, 0.0, 0.0);
+  if (!std::isfinite(spacing_m) || spacing_m <= 0)
+    throw EditError("BrushStroke: spacing must be positive and finite (got " + std::to_string(spacing_m) + " m)");
+}
+
+PixelRect BrushStroke::begin(HeightField& f, double x, double y) {
+  check(brush_, x, y);
+  last_x_ = x, last_y_ = y, started_ = true;
+  stamps_ = 1;
+  const PixelRect changed = stamp(f, brush_, x, y);
+  if (!changed.empty()) f.mark_dirty(changed);
+  return changed;
+}
+
+PixelRect BrushStroke::move_to(HeightField& f, double x, double y) {
+  if (!started_) return begin(f, x, y);
+  check(brush_, x, y);
+  const double dx = x - last_x_, dy = y - last_y_, length = std::hypot(dx, dy);
+  const int n = static_cast<int>(std::floor(length / spacing_));
+  if (n == 0) return {};
+  // Every stamp on the straight line from the last one: the same points however the
+  // path was cut into moves.
+  PixelRect changed;
+  const double ux = dx / length, uy = dy / length;
+  try {
+    for (int k = 1; k <= n; ++k) {
+      changed = bounding_union(changed, stamp(f, brush_, last_x_ + k * spacing_ * ux, last_y_ + k * spacing_ * uy));
+      ++stamps_;
+    }
+  } catch (const EditError&) {  // the applications before the failing one stay, tracked
+    if (!changed.empty()) f.mark_dirty(changed);
+    throw;
+  }
+  last_x_ += n * spacing_ * ux;
+  last_y_ += n * spacing_ * uy;
+  if (!changed.empty()) f.mark_dirty(changed);
   return changed;
 }
 

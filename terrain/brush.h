@@ -32,4 +32,31 @@ struct Brush {
 // or the strength is not finite or outside its mode's range; the field is then unchanged.
 PixelRect apply_brush(HeightField& field, const Brush& brush, double x_m, double y_m);
 
+// A drag of the brush: one application where it starts, then one every `spacing` metres,
+// each on the straight line from the previous application toward the position the brush
+// was moved to, so a stroke along a line does not depend on how often its path is sampled
+// (the frame rate). Each call that
+// changes the field bumps its revision once, dirtying the bounding rectangle of all its
+// applications. Positions are in the field frame, as apply_brush's.
+class BrushStroke {
+ public:
+  // Throws EditError for a bad brush or a spacing that is not positive and finite.
+  BrushStroke(const Brush& brush, double spacing_m);
+  // The first application, at (x_m, y_m).
+  PixelRect begin(HeightField& field, double x_m, double y_m);
+  // Applications every `spacing` from the last one toward (x_m, y_m); the remainder of the
+  // distance carries over to the next move (none when it is shorter than `spacing`).
+  // Before begin(): begin(). If an application throws (float overflow), those before it
+  // stay applied and dirty.
+  PixelRect move_to(HeightField& field, double x_m, double y_m);
+  int stamps() const { return stamps_; }
+
+ private:
+  Brush brush_;
+  double spacing_;
+  double last_x_ = 0.0, last_y_ = 0.0;  // the last application
+  bool started_ = false;
+  int stamps_ = 0;
+};
+
 }  // namespace skylit::terrain

@@ -228,5 +228,90 @@ TEST(TerrainBrush, BadInputThrowsOneLineAndChangesNothing) {
   EXPECT_EQ(f.heights, before.heights);
 }
 
+// The stamps a stroke along a straight line must make: its start, then every `spacing`.
+HeightField stamped(HeightField f, const Brush& b, double x0, double y0, double x1, double y1, double spacing) {
+  apply_brush(f, b, x0, y0);
+  const double length = std::hypot(x1 - x0, y1 - y0), ux = (x1 - x0) / length, uy = (y1 - y0) / length;
+  for (int k = 1; k * spacing <= length; ++k) apply_brush(f, b, x0 + k * spacing * ux, y0 + k * spacing * uy);
+  return f;
+}
+
+double max_abs_diff(const HeightField& a, const HeightField& b) {
+  double worst = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(double(a.heights[k]) - b.heights[k]));
+  return worst;
+}
+
+TEST(TerrainBrushStroke, IsItsStampsEverySpacingInOneRevisionPerMove) {
+  const HeightField base = noisy(200, 120, 2.0, 5);
+  const Brush b{BrushMode::Raise, 20.0, 1.5};
+  const double spacing = 5.0, x0 = 40, y0 = -60, x1 = 40 + 0.8 * 52.5, y1 = -60 - 0.6 * 52.5;  // 10.5 spacings
+  HeightField f = base;
+  BrushStroke stroke(b, spacing);
+  stroke.begin(f, x0, y0);
+  const auto rev = f.revision;
+  const HeightField before_move = f;
+  const PixelRect r = stroke.move_to(f, x1, y1);
+  EXPECT_EQ(stroke.stamps(), 11);
+  EXPECT_EQ(f.revision, rev + 1);
+  EXPECT_EQ(r, diff_box(before_move, f));
+  EXPECT_EQ(f.last_dirty, r);
+  EXPECT_LT(max_abs_diff(f, stamped(base, b, x0, y0, x1, y1, spacing)), 1e-5);
+}
+
+TEST(TerrainBrushStroke, ALineSampledOftenGivesWhatOneMoveGives) {
+  const HeightField base = noisy(160, 160, 1.0, 6);
+  const Brush b{BrushMode::Lower, 12.0, 0.7};
+  HeightField once = base, often = base;
+  BrushStroke a(b, 3.0), c(b, 3.0);
+  a.begin(once, 30, -30);
+  a.move_to(once, 130, -110);
+  c.begin(often, 30, -30);
+  for (int k = 1; k <= 37; ++k) c.move_to(often, 30 + 100.0 * k / 37, -30 - 80.0 * k / 37);
+  EXPECT_EQ(a.stamps(), c.stamps());
+  EXPECT_LT(max_abs_diff(once, often), 1e-4);
+  EXPECT_GT(max_abs_diff(once, base), 1.0);
+}
+
+TEST(TerrainBrushStroke, ShortMovesCarryOverAndHoldingStillDoesNothing) {
+  HeightField f = noisy(100, 100, 1.0, 7);
+  const Brush b{BrushMode::Raise, 10.0, 1.0};
+  const HeightField base = f;
+  BrushStroke stroke(b, 4.0);
+  stroke.begin(f, 50, -50);
+  const auto rev = f.revision;
+  EXPECT_TRUE(stroke.move_to(f, 50, -50).empty());     // held still
+  EXPECT_TRUE(stroke.move_to(f, 52.4, -50).empty());   // 0.6 spacing
+  EXPECT_EQ(f.revision, rev);
+  EXPECT_FALSE(stroke.move_to(f, 54.8, -50).empty());  // 1.2: one stamp, at 54
+  EXPECT_EQ(stroke.stamps(), 2);
+  HeightField want = base;
+  apply_brush(want, b, 50, -50);
+  apply_brush(want, b, 54, -50);
+  EXPECT_LT(max_abs_diff(f, want), 1e-5);
+}
+
+TEST(TerrainBrushStroke, AnOverflowMidStrokeKeepsWhatWasAppliedTracked) {
+  HeightField f(100, 20, 1.0);
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 50; i < f.width; ++i) f.at(i, j) = 3e38f;  // the right half near float's top
+  BrushStroke stroke({BrushMode::Raise, 5.0, 1e38}, 2.0);
+  stroke.begin(f, 10, -10);
+  const HeightField before = f;
+  const auto rev = f.revision;
+  EXPECT_THROW(stroke.move_to(f, 90, -10), EditError);
+  EXPECT_EQ(f.revision, rev + 1);
+  EXPECT_GT(stroke.stamps(), 10);
+  const PixelRect changed = diff_box(before, f);
+  const PixelRect& d = f.last_dirty;
+  EXPECT_TRUE(changed.x0 >= d.x0 && changed.y0 >= d.y0 && changed.x1() <= d.x1() && changed.y1() <= d.y1());
+  EXPECT_LT(changed.x1(), 50 + 5);  // nothing past the first stamp that overflows
+}
+
+TEST(TerrainBrushStroke, BadSpacingThrows) {
+  for (double s : {0.0, -1.0, double(NAN), double(INFINITY)})
+    EXPECT_THROW(BrushStroke({BrushMode::Raise, 5.0, 1.0}, s), EditError) << s;
+}
+
 }  // namespace
 }  // namespace skylit::terrain

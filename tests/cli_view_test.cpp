@@ -309,6 +309,46 @@ TEST(ViewWindow, BrushChangesTheTerrainUnderTheClick) {
   EXPECT_LT(worst, 6.0);
 }
 
+TEST(ViewWindow, ADragBrushesAlongThePath) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  // The brush test's view; the button down at (100, 90), dragged to (220, 90) over frames 3 … 7.
+  write_text(dir.file("s.txt"), "0 pose 7650 -5650 3500 180 -45\n0 press b\n2 screenshot " + dir.file("a.png") +
+                                    "\n3 drag 100 90 220 90 4\n9 screenshot " + dir.file("b.png") + "\n9 quit\n");
+  const skylit::testing::Run r = run_view("--synthetic --time 2026-06-21T05:00:00Z --width 320 --height 180 --script " +
+                                          dir.file("s.txt") + " --camera-log " + dir.file("c.csv") + " --refresh-frames 0");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const OutputRaster a = read_output(dir.file("a.png")), b = read_output(dir.file("b.png"));
+  ASSERT_EQ(a.w, 320);
+  ASSERT_EQ(b.w, 320);
+  // Mean change in a 17×17 box around (ci, cj), and away from the path's band.
+  auto change = [&](int ci, int cj) {
+    double sum = 0;
+    int n = 0;
+    for (int j = cj - 8; j <= cj + 8; ++j)
+      for (int i = ci - 8; i <= ci + 8; ++i, ++n) sum += std::abs(luma(b, i, j) - luma(a, i, j));
+    return sum / n;
+  };
+  double far = 0;
+  int n_far = 0;
+  for (int j = 0; j < a.h; ++j)
+    for (int i = 0; i < a.w; ++i)
+      if (std::abs(j - 90) > 40 || i < 60 || i > 260) {
+        far += std::abs(luma(b, i, j) - luma(a, i, j));
+        ++n_far;
+      }
+  far /= n_far;
+  for (int ci : {105, 160, 215}) {
+    EXPECT_GT(change(ci, 90), 1.0) << "the ridge at x = " << ci;
+    EXPECT_GT(change(ci, 90), 10.0 * far) << ci;
+  }
+  // Every frame with the button down and the cursor moved by half a radius or more edits.
+  const std::vector<CameraRow> log = read_camera_log(dir.file("c.csv"));
+  ASSERT_EQ(log.size(), 10u);
+  for (const CameraRow& row : log)
+    EXPECT_EQ(row.horizons_computed, row.frame == 0 || (row.frame >= 3 && row.frame <= 7) ? 1 : 0) << row.frame;
+}
+
 TEST(ViewWindow, NoDisplayPointsToRender) {
   const skylit::testing::Run r = run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SKYLIT_BINARY) +
                                            " view --synthetic --time 2026-06-21T10:00:00Z 2>&1");

@@ -28,7 +28,9 @@ TEST(ViewScript, PressHoldLookAndCommandsLandOnTheirFrames) {
   for (int f = 1; f <= 5; ++f) {
     s.feed(f, in);
     EXPECT_EQ(in.is_held("w"), f >= 2 && f < 5) << "frame " << f;
-    if (f == 3) EXPECT_EQ(in.look, glm::dvec2(10, -4));
+    if (f == 3) {
+      EXPECT_EQ(in.look, glm::dvec2(10, -4));
+    }
     in.end_frame();
   }
   const auto at4 = s.commands_at(4);
@@ -42,9 +44,27 @@ TEST(ViewScript, PressHoldLookAndCommandsLandOnTheirFrames) {
   EXPECT_EQ(s.last_frame(), 6);
 }
 
+TEST(ViewScript, ADragHoldsTheButtonAndMovesTheCursorEvenly) {
+  const ViewScript s = ViewScript::parse("2 drag 100 50 200 10 4\n", "s.txt");
+  InputState in;
+  for (int f = 0; f <= 8; ++f) {
+    s.feed(f, in);
+    EXPECT_EQ(in.brush_click, f == 2) << f;
+    EXPECT_EQ(in.brush_held, f >= 2 && f <= 6) << f;  // down on frames 2 … 6, up on 7
+    if (f >= 2 && f <= 6) {
+      const double t = (f - 2) / 4.0;
+      EXPECT_EQ(in.cursor, glm::dvec2(100 + 100 * t, 50 - 40 * t)) << f;
+    }
+    in.end_frame();
+  }
+  EXPECT_EQ(in.cursor, glm::dvec2(200, 10));
+  EXPECT_EQ(s.last_frame(), 7);
+}
+
 TEST(ViewScript, BadLinesNameTheFileAndLine) {
   const char* bad[] = {"x press w", "0 jump", "0 press nosuchkey", "0 hold w 0", "0 scrub yesterday",
-                       "0 pose 1 2 3 0 95", "0 look 1", "0 quit now"};
+                       "0 pose 1 2 3 0 95", "0 look 1", "0 quit now", "0 drag 1 2 3 4",
+                       "0 drag 1 2 3 4 0"};
   for (const char* line : bad) {
     try {
       ViewScript::parse(std::string("0 press w\n") + line + "\n", "s.txt");

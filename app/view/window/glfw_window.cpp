@@ -102,9 +102,10 @@ void GlfwWindow::on_button(GLFWwindow* w, int button, int action, int) {
   if (!self->input_) return;
   if (button == GLFW_MOUSE_BUTTON_RIGHT) self->looking_ = action == GLFW_PRESS && !self->ui_mouse_;
   if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS && !self->ui_mouse_) {
-    self->input_->brush_click = true;
+    self->input_->brush_click = self->input_->brush_held = true;
     self->input_->cursor = {self->last_x_, self->last_y_};
   }
+  if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_RELEASE) self->input_->brush_held = false;
 }
 
 void GlfwWindow::on_cursor(GLFWwindow* w, double x, double y) {

@@ -16,6 +16,7 @@ struct InputState {
   glm::dvec2 look{0.0};              // mouse-look delta, pixels (right button dragged)
   double wheel = 0.0;                // wheel steps
   bool brush_click = false;          // the left button went down over the terrain
+  bool brush_held = false;           // and is still down (a brush stroke)
   glm::dvec2 cursor{0.0};            // window pixels, from the top left
 
   bool is_held(const std::string& key) const { return held.count(key) != 0; }

@@ -63,6 +63,10 @@ ViewScript ViewScript::parse(const std::string& text, const std::string& name) {
     } else if (verb == "click") {
       e.verb = Verb::Click;
       if (!(in >> e.dx >> e.dy)) fail(name, line, "click needs X Y in window pixels");
+    } else if (verb == "drag") {
+      e.verb = Verb::Drag;
+      if (!(in >> e.dx >> e.dy >> e.to_x >> e.to_y >> e.frames) || e.frames < 1)
+        fail(name, line, "drag needs X0 Y0 X1 Y1 in window pixels and a number of frames >= 1");
     } else if (verb == "scrub") {
       e.verb = Verb::Scrub;
       std::string t;
@@ -86,7 +90,7 @@ ViewScript ViewScript::parse(const std::string& text, const std::string& name) {
     } else if (verb == "quit") {
       e.verb = Verb::Quit;
     } else {
-      fail(name, line, "unknown verb '" + verb + "' (press, hold, look, wheel, click, scrub, screenshot, windowshot, pose, quit)");
+      fail(name, line, "unknown verb '" + verb + "' (press, hold, look, wheel, click, drag, scrub, screenshot, windowshot, pose, quit)");
     }
     std::string extra;
     if (in >> extra) fail(name, line, "unexpected '" + extra + "'");
@@ -106,6 +110,11 @@ ViewScript ViewScript::read(const std::string& path) {
 void ViewScript::feed(int frame, InputState& input) const {
   for (const ScriptEvent& e : events_) {
     if (e.verb == Verb::Hold && e.frame + e.frames == frame) input.release(e.key);
+    if (e.verb == Verb::Drag && frame > e.frame && frame <= e.frame + e.frames + 1) {
+      const double t = std::min(1.0, static_cast<double>(frame - e.frame) / e.frames);
+      input.cursor = {e.dx + t * (e.to_x - e.dx), e.dy + t * (e.to_y - e.dy)};
+      input.brush_held = frame <= e.frame + e.frames;
+    }
     if (e.frame != frame) continue;
     switch (e.verb) {
       case Verb::Press:
@@ -125,6 +134,10 @@ void ViewScript::feed(int frame, InputState& input) const {
         input.brush_click = true;
         input.cursor = {e.dx, e.dy};
         break;
+      case Verb::Drag:
+        input.brush_click = input.brush_held = true;
+        input.cursor = {e.dx, e.dy};
+        break;
       default:
         break;
     }
@@ -142,7 +155,7 @@ std::vector<ScriptEvent> ViewScript::commands_at(int frame) const {
 
 int ViewScript::last_frame() const {
   int last = -1;
-  for (const ScriptEvent& e : events_) last = std::max(last, e.frame + (e.verb == Verb::Hold ? e.frames : 0));
+  for (const ScriptEvent& e : events_) last = std::max(last, e.frame + (e.verb == Verb::Hold ? e.frames : e.verb == Verb::Drag ? e.frames + 1 : 0));
   return last;
 }
 

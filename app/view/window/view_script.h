@@ -7,6 +7,8 @@
 //   FRAME wheel STEPS         wheel steps (+: closer, or faster in free mode)
 //   FRAME click X Y           a left click at window pixel (X, Y) from the top left
 //                             (the terrain brush, when one is chosen: key b)
+//   FRAME drag X0 Y0 X1 Y1 FRAMES   the left button down at (X0, Y0), moved evenly to
+//                             (X1, Y1) over FRAMES frames, released after the last
 //   FRAME scrub TIME          the clock jumps to TIME (ISO 8601 with a zone)
 //   FRAME screenshot FILE     saves the frame (PNG) at the panel's screenshot scale
 //   FRAME windowshot FILE     saves the window as shown, with the panel (PNG)
@@ -25,11 +27,12 @@
 namespace skylit::app::view::window {
 
 struct ScriptEvent {
-  enum class Verb { Press, Hold, Look, Wheel, Click, Scrub, Screenshot, WindowShot, Pose, Quit } verb;
+  enum class Verb { Press, Hold, Look, Wheel, Click, Drag, Scrub, Screenshot, WindowShot, Pose, Quit } verb;
   int frame = 0;
   std::string key;          // press, hold
-  int frames = 0;           // hold
-  double dx = 0, dy = 0;    // look, click; dx: wheel steps
+  int frames = 0;           // hold, drag
+  double dx = 0, dy = 0;    // look, click, drag's start; dx: wheel steps
+  double to_x = 0, to_y = 0;  // drag's end
   double unix_seconds = 0;  // scrub
   std::string path;         // screenshot, windowshot
   glm::dvec3 eye{0.0};      // pose

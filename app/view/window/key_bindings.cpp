@@ -22,7 +22,7 @@ constexpr std::array kBindings{
     KeyBinding{"2", Action::CameraOrbit, "camera: orbit (right-drag turns, wheel zooms)"},
     KeyBinding{"3", Action::CameraFree, "camera: free (WASD, Q/E down/up, right-drag looks, wheel: speed)"},
     KeyBinding{"t", Action::NextTrack, "follow the next track"},
-    KeyBinding{"b", Action::Brush, "terrain brush: off / raise / lower / smooth (left click applies)"},
+    KeyBinding{"b", Action::Brush, "terrain brush: off / raise / lower / smooth (left click or drag applies)"},
     KeyBinding{"h", Action::TogglePanel, "hide / show the panel"},
     KeyBinding{"f1", Action::Help, "these keys"},
     KeyBinding{"f12", Action::Screenshot, "screenshot (scale in the panel)"},

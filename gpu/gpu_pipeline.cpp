@@ -485,6 +485,26 @@ struct GpuProductPipeline::Impl {
   }
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   std::uint64_t pyramid_field_id = 0, pyramid_revision = 0;  // the field it was built from
+  // The pyramid of the resident field `f`: updated in place after one edit of the field it
+  // was built from (updatable when edits refresh incrementally), else built; returns the
+  // wall milliseconds it took (0 when it was current).
+  double sync_pyramid(const terrain::HeightField& f, const horizon::MarchOptions& m, std::size_t& uploaded) {
+    if (pyramid_field_id == f.id.value() && pyramid_revision == f.revision) return 0.0;
+    const auto start = Clock::now();
+    const terrain::PixelRect& d = f.last_dirty;
+    const bool one_edit = pyramid->updatable() && pyramid_field_id == f.id.value() && f.revision == pyramid_revision + 1 &&
+                          d.x0 >= 0 && d.y0 >= 0 && d.x1() <= f.width && d.y1() <= f.height;
+    if (one_edit) {
+      pyramid->update(field.heights(), d);
+    } else {
+      uploaded += pyramid->build(field.heights(), f.width, f.height, horizon::march_pyramid_options(m),
+                                 !bilinear_levels(m), refresh_budget > 0);
+    }
+    pyramid_field_id = f.id.value();
+    pyramid_revision = f.revision;
+    glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
+    return ms_since(start);
+  }
   // Resident between compute() calls (gpu/resident_field.h): an edited field re-uploads
   // only its changed rows; the schedules only when they change.
   ResidentField field;
@@ -846,6 +866,10 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // As the reference decides; an incremental refresh marches (the sweep is not local).
   const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions);
   if (!reuse) k.last_compute_swept = sweep;
+  // A swept field refreshed after an edit marches: its kernels are compiled and its
+  // pyramid built now, so that the edit only updates the pyramid.
+  const bool may_refresh = keep && sweep && k.refresh_budget > 0 && mOptions.subsample == 1;
+  if (may_refresh && k.pyramid) t.pyramid_ms = k.sync_pyramid(field, mOptions.march, t.uploaded_bytes);
   if (!reuse && !mOptions.exact && !sweep) {
     const horizon::MarchSchedule steps = horizon::march_schedule(field, mOptions.march);
     steps_count = static_cast<int>(steps.distances.size());
@@ -853,16 +877,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       throw std::runtime_error("GPU pipeline: the march has " + std::to_string(steps_count) + " steps, over the kernel's " +
                                std::to_string(kMaxMarchSteps));
     first_distance = steps.distances.front();
-    if (k.pyramid) {  // rebuilt when the field changed (not for a refinement's frames)
-      if (k.pyramid_field_id != field.id.value() || k.pyramid_revision != field.revision) {
-        const auto pyramid_start = Clock::now();
-        t.uploaded_bytes += k.pyramid->build(k.field.heights(), w, h, horizon::march_pyramid_options(mOptions.march),
-                                             !bilinear_levels(mOptions.march));
-        k.pyramid_field_id = field.id.value();
-        k.pyramid_revision = field.revision;
-        glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
-        t.pyramid_ms = ms_since(pyramid_start);
-      }
+    if (k.pyramid) {  // made again only when the field changed (not for a refinement's frames)
+      t.pyramid_ms = k.sync_pyramid(field, mOptions.march, t.uploaded_bytes);
       z_bound = static_cast<float>(horizon::march_exit_height_bound(k.pyramid->max_coeff()));
     } else {  // bilinear level-0 heights
       z_bound = static_cast<float>(horizon::march_exit_height_bound(field.heights));
@@ -962,8 +978,6 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   const ComputeProgram& products =
       k.products_kernel(mOptions, sweep, one_dx, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
-  // A swept field refreshed after an edit marches: its kernels compiled now, not at the edit.
-  const bool may_refresh = keep && sweep && k.refresh_budget > 0 && mOptions.subsample == 1;
   if (may_refresh) k.products_kernel(mOptions, false, one_dx, Impl::kKeepVis);
   if (reuse || keep) {
     k.vis.bind_storage(kVis);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -48,10 +49,14 @@ int to_index(std::size_t v, const char* what) {
   return static_cast<int>(v);
 }
 
-// Appends the taps of one axis of one level; returns the base entry in `taps`.
-int append_taps(int n_in, int n_out, std::vector<std::int32_t>& taps, std::vector<float>& weights) {
+// Appends the taps of one axis of one level, and each output's clamped inputs to
+// `reads`; returns the base entry in `taps`.
+int append_taps(int n_in, int n_out, std::vector<std::int32_t>& taps, std::vector<float>& weights,
+                std::vector<std::pair<int, int>>& reads) {
   const int base = static_cast<int>(taps.size() / 4);
   for (const terrain::ReductionTaps& t : terrain::reduction_axis_taps(n_in, n_out)) {
+    const int last = t.first + static_cast<int>(t.weight.size()) - 1;
+    reads.emplace_back(std::clamp(t.first, 0, n_in - 1), std::clamp(last, 0, n_in - 1));
     const std::int32_t entry[4] = {t.first, static_cast<std::int32_t>(t.weight.size()),
                                    to_index(weights.size(), "the filter taps"), 0};
     taps.insert(taps.end(), entry, entry + 4);
@@ -69,6 +74,15 @@ int append_factors(int n, std::vector<float>& weights) {
   return base;
 }
 
+// The outputs [first, end) whose reads meet inputs [lo, hi): contiguous, since the
+// taps' windows move monotonically along the axis.
+std::pair<int, int> outputs_reading(const std::vector<std::pair<int, int>>& reads, int lo, int hi) {
+  int first = static_cast<int>(reads.size()), end = 0;
+  for (int o = 0; o < static_cast<int>(reads.size()); ++o)
+    if (reads[o].first < hi && reads[o].second >= lo) first = std::min(first, o), end = o + 1;
+  return {first, std::max(first, end)};
+}
+
 }  // namespace
 
 GpuPyramid::GpuPyramid(std::size_t max_binding_bytes)
@@ -83,7 +97,7 @@ void GpuPyramid::bind_level(unsigned binding, int l) const {
 }
 
 std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
-                              bool coefficients) {
+                              bool coefficients, bool updatable) {
   if (width < 1 || height < 1) throw std::invalid_argument("GPU pyramid: empty height field");
   if (heights.size_bytes() < static_cast<std::size_t>(width) * height * sizeof(float))
     throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
@@ -92,6 +106,8 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
                     options.levels == mOptions.levels && options.min_size == mOptions.min_size;
   if (!same) {  // geometry and tables for this size
     mWidth = mHeight = 0;  // none kept if a check below throws
+    mRows.clear();
+    mSamples = Buffer();
     const int n = terrain::pyramid_level_count(width, height, options);
     mShapes.clear();
     mOffsets.clear();
@@ -111,8 +127,8 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
       mOffsets.push_back(total);
       LevelTables& t = mTables[l];
       if (l > 0) {
-        t.taps_x = append_taps(width, s.width, taps, weights);
-        t.taps_y = append_taps(height, s.height, taps, weights);
+        t.taps_x = append_taps(width, s.width, taps, weights, t.reads_x);
+        t.taps_y = append_taps(height, s.height, taps, weights, t.reads_y);
         scratch = std::max(scratch, static_cast<std::size_t>(height) * s.width);
       }
       t.factors_x = append_factors(s.width, weights);
@@ -132,7 +148,29 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     uploaded = mTaps.size_bytes() + mWeights.size_bytes();
     mWidth = width, mHeight = height, mOptions = options;
   }
+  if (updatable && mSamples.size_bytes() == 0) {  // each level's x-filtered rows (each ≤ the scratch)
+    mRows.clear();
+    mRows.emplace_back(sizeof(float));  // level 0 has none
+    for (int l = 1; l < levels(); ++l) mRows.emplace_back(static_cast<std::size_t>(height) * mShapes[l].width * sizeof(float));
+    mSamples = Buffer(mCoeffs.size_bytes());
+  }
+  mCoefficients = coefficients;
+  mUpdatable = updatable;
+  compute(heights, {0, 0, width, height});
+  return uploaded;
+}
 
+void GpuPyramid::update(const Buffer& heights, const terrain::PixelRect& dirty) {
+  if (!mUpdatable) throw std::logic_error("GpuPyramid::update: the last build was not updatable");
+  if (dirty.x0 < 0 || dirty.y0 < 0 || dirty.x1() > mWidth || dirty.y1() > mHeight)
+    throw std::invalid_argument("GpuPyramid::update: the edited rectangle is outside the field");
+  if (heights.size_bytes() < static_cast<std::size_t>(mWidth) * mHeight * sizeof(float))
+    throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
+  if (!dirty.empty()) compute(heights, dirty);
+}
+
+void GpuPyramid::compute(const Buffer& heights, const terrain::PixelRect& window) {
+  const int width = mWidth, height = mHeight;
   mTaps.bind_storage(kTaps);
   mWeights.bind_storage(kWeights);
   const std::uint32_t no_key = 0;  // below every float's key
@@ -143,44 +181,67 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
                            static_cast<GLsizeiptr>(static_cast<std::size_t>(width) * height * sizeof(float)));
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   // The filter reads through buffer textures (pyramid_filter.comp says why).
-  const BufferTexture heights_tex(heights), scratch_tex(mScratch), weights_tex(mWeights);
+  const BufferTexture heights_tex(heights), weights_tex(mWeights);
+  std::optional<BufferTexture> scratch_tex;
+  if (!mUpdatable) scratch_tex.emplace(mScratch);
   weights_tex.bind_sampler(kWeights);
+  auto set_window = [&](int x0, int y0, int x1, int y1) {
+    mFilter.set_uniform("out_x0", x0);
+    mFilter.set_uniform("out_y0", y0);
+    mFilter.set_uniform("out_x1", x1);
+    mFilter.set_uniform("out_y1", y1);
+  };
   for (int l = 0; l < levels(); ++l) {
     const terrain::LevelShape& s = mShapes[l];
     const LevelTables& t = mTables[l];
     if (l > 0) {
-      // x pass: every level-0 row → s.width values, into the scratch buffer.
+      // The outputs that read the window: columns along x, then rows along y.
+      const auto [cx0, cx1] = outputs_reading(t.reads_x, window.x0, window.x1());
+      const auto [ry0, ry1] = outputs_reading(t.reads_y, window.y0, window.y1());
+      // x pass: level-0 rows → s.width values, into the scratch (or the level's kept rows).
       heights_tex.bind_sampler(kSrc);
-      mScratch.bind_storage(kDst);
+      const Buffer& rows = mUpdatable ? mRows[l] : mScratch;
+      rows.bind_storage(kDst);
       mFilter.set_uniform("axis", 0);
       mFilter.set_uniform("out_width", s.width);
-      mFilter.set_uniform("out_height", height);
       mFilter.set_uniform("n_in", width);
       mFilter.set_uniform("along_stride", 1);
       mFilter.set_uniform("across_stride", width);
       mFilter.set_uniform("tap_base", t.taps_x);
-      mFilter.dispatch_covering(s.width, height);
-      // y pass: the scratch's columns → the level's samples, in its coefficients' range.
-      scratch_tex.bind_sampler(kSrc);
-      bind_level(kDst, l);
+      set_window(cx0, window.y0, cx1, window.y1());
+      mFilter.dispatch_covering(cx1 - cx0, window.height);
+      // y pass: those rows' columns → the level's samples (kept, or in its coefficients' range).
+      std::optional<BufferTexture> level_rows_tex;
+      if (mUpdatable) level_rows_tex.emplace(rows);
+      (mUpdatable ? *level_rows_tex : *scratch_tex).bind_sampler(kSrc);
+      if (mUpdatable) {
+        mSamples.bind_storage_range(kDst, mOffsets[l] * sizeof(float),
+                                    static_cast<std::size_t>(s.width) * s.height * sizeof(float));
+      } else {
+        bind_level(kDst, l);
+      }
       mFilter.set_uniform("axis", 1);
-      mFilter.set_uniform("out_height", s.height);
       mFilter.set_uniform("n_in", height);
       mFilter.set_uniform("along_stride", s.width);
       mFilter.set_uniform("across_stride", 1);
       mFilter.set_uniform("tap_base", t.taps_y);
-      mFilter.dispatch_covering(s.width, s.height);
+      set_window(cx0, ry0, cx1, ry1);
+      mFilter.dispatch_covering(cx1 - cx0, ry1 - ry0);
+      if (mUpdatable)  // the solve below works in place: on a copy of the samples
+        glCopyNamedBufferSubData(mSamples.id(), mCoeffs.id(), static_cast<GLintptr>(mOffsets[l] * sizeof(float)),
+                                 static_cast<GLintptr>(mOffsets[l] * sizeof(float)),
+                                 static_cast<GLsizeiptr>(static_cast<std::size_t>(s.width) * s.height * sizeof(float)));
     }
     // Coefficients: rows, then columns (without `coefficients`: the column pass's max only).
     bind_level(kCoeffs, l);
-    mSolve.set_uniform("solve", coefficients ? 1 : 0);
+    mSolve.set_uniform("solve", mCoefficients ? 1 : 0);
     mSolve.set_uniform("lines", s.height);
     mSolve.set_uniform("n", s.width);
     mSolve.set_uniform("line_stride", s.width);
     mSolve.set_uniform("elem_stride", 1);
     mSolve.set_uniform("factor_base", t.factors_x);
     mSolve.set_uniform("track_max", 0);
-    if (coefficients) mSolve.dispatch_covering(s.height);
+    if (mCoefficients) mSolve.dispatch_covering(s.height);
     mSolve.set_uniform("lines", s.width);
     mSolve.set_uniform("n", s.height);
     mSolve.set_uniform("line_stride", 1);
@@ -190,7 +251,6 @@ std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, cons
     mSolve.dispatch_covering(s.width);
   }
   throw_on_gl_error("GpuPyramid::build");
-  return uploaded;
 }
 
 float GpuPyramid::max_coeff() const {

@@ -20,10 +20,12 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "gpu/buffers.h"
 #include "gpu/compute_program.h"
+#include "terrain/height_field.h"
 #include "terrain/pyramid.h"
 
 namespace skylit::gpu {
@@ -43,8 +45,18 @@ class GpuPyramid {
   // tables, or 0 when they were kept). Throws std::invalid_argument for a bad size or
   // options, std::runtime_error when one level exceeds the storage-block limit or all
   // levels the buffer-texture limit.
+  // With `updatable`, it also keeps what update() reads: every level's x-filtered rows
+  // and samples (Σ level widths × height + Σ level sizes floats: 8.7× the field at k_v 4).
   std::size_t build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
-                    bool coefficients = true);
+                    bool coefficients = true, bool updatable = false);
+  // After the field's heights changed inside `dirty` only (since the last build or
+  // update, which was updatable): filters again only the outputs whose taps read an
+  // edited texel, then solves every level as build() does, so the result is build()'s bit
+  // for bit (tests/gpu_pyramid_test.cpp). The filters are most of a build's time and an
+  // edit reaches few of their outputs at the fine levels. Throws std::logic_error without
+  // an updatable build, std::invalid_argument for a rectangle outside the field.
+  void update(const Buffer& heights, const terrain::PixelRect& dirty);
+  bool updatable() const { return mUpdatable; }
 
   int levels() const { return static_cast<int>(mShapes.size()); }
   const terrain::LevelShape& shape(int l) const { return mShapes.at(l); }
@@ -58,6 +70,9 @@ class GpuPyramid {
  private:
   // Binds level l's coefficients as the storage block at `binding`.
   void bind_level(unsigned binding, int l) const;
+  // Level 0 and the filters of levels ≥ 1 over the outputs that read `window` (all of
+  // them for the whole field), then every level's solve.
+  void compute(const Buffer& heights, const terrain::PixelRect& window);
 
   ComputeProgram mFilter, mSolve;
   std::size_t mMaxBindingBytes;
@@ -67,11 +82,18 @@ class GpuPyramid {
   std::vector<std::size_t> mOffsets;
   // Per level: tap-table base of the x and y passes (l ≥ 1), pivot-table base of the
   // row and column solves, in mTaps / mWeights.
+  // The inputs each output reads, clamped (first, last) per axis, for update()'s windows.
   struct LevelTables {
     int taps_x = 0, taps_y = 0, factors_x = 0, factors_y = 0;
+    std::vector<std::pair<int, int>> reads_x, reads_y;
   };
   std::vector<LevelTables> mTables;
+  bool mCoefficients = true, mUpdatable = false;
   Buffer mTaps, mWeights, mCoeffs, mScratch, mMaxKey;
+  // Updatable builds: each level's x-filtered rows (height × its width) and the levels'
+  // samples (mCoeffs' layout).
+  std::vector<Buffer> mRows;
+  Buffer mSamples;
 };
 
 }  // namespace skylit::gpu

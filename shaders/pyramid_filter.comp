@@ -27,15 +27,17 @@ float weight(int index) { return texelFetch(weights_tex, index).r; }
 
 uniform int axis;           // 0: filter along x, 1: along y
 uniform int out_width;      // output grid (row-major from dst[0])
-uniform int out_height;
 uniform int n_in;           // inputs along the axis (clamp range)
 uniform int along_stride;   // src index step along the axis
 uniform int across_stride;  // src index step across it
 uniform int tap_base;       // this axis and level's first entry in taps[]
+// The outputs computed: columns out_x0 .. out_x1 - 1, rows out_y0 .. out_y1 - 1 (all of
+// them, or after an edit the window that it changed), one per invocation from the first.
+uniform int out_x0, out_y0, out_x1, out_y1;
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x), j = int(gl_GlobalInvocationID.y);
-  if (i >= out_width || j >= out_height) return;
+  int i = int(gl_GlobalInvocationID.x) + out_x0, j = int(gl_GlobalInvocationID.y) + out_y0;
+  if (i >= out_x1 || j >= out_y1) return;
   int along = axis == 0 ? i : j, across = axis == 0 ? j : i;
   ivec4 t = taps[tap_base + along];
   int base = across * across_stride;

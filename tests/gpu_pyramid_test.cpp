@@ -207,6 +207,57 @@ TEST_F(GpuPyramidTest, ALevelOverTheBindingLimitThrows) {
   }
 }
 
+// An edit's update (filters only where the taps read the edited texels) against a build
+// of the edited field from scratch: bit for bit at every level, and the same maximum.
+TEST_F(GpuPyramidTest, AnUpdateAfterEditsIsABuildOfTheEditedField) {
+  struct Case {
+    int w, h, k_v;
+  };
+  for (const Case c : {Case{67, 45, 4}, Case{67, 45, 1}, Case{257, 131, 4}, Case{3, 50, 2}})
+    for (bool coefficients : {true, false}) {
+      SCOPED_TRACE(std::to_string(c.w) + "×" + std::to_string(c.h) + " k_v " + std::to_string(c.k_v) +
+                   (coefficients ? " coefficients" : " samples"));
+      terrain::HeightField f = void_filled_field(c.w, c.h, 21 + c.w);
+      const terrain::PyramidOptions options{.k_v = c.k_v};
+      Buffer heights = Buffer::from(std::span<const float>(f.heights));
+      GpuPyramid updated;
+      updated.build(heights, f.width, f.height, options, coefficients, true);
+      ASSERT_TRUE(updated.updatable());
+      const std::vector<float> before = updated.download_level(std::min(1, updated.levels() - 1));
+      // Inside, at a corner, a whole row, one texel: each edit on top of the last.
+      const terrain::PixelRect edits[] = {{c.w / 3, c.h / 2, std::max(1, c.w / 5), std::max(1, c.h / 6)},
+                                          {0, 0, 2, 3},
+                                          {0, c.h - 1, c.w, 1},
+                                          {c.w - 1, c.h / 3, 1, 1}};
+      for (const terrain::PixelRect& e : edits) {
+        for (int j = e.y0; j < e.y1(); ++j)
+          for (int i = e.x0; i < e.x1(); ++i) f.at(i, j) += 37.5f + 3.0f * static_cast<float>((i * 7 + j * 3) % 5);
+        heights = Buffer::from(std::span<const float>(f.heights));
+        updated.update(heights, e);
+        GpuPyramid fresh;
+        fresh.build(heights, f.width, f.height, options, coefficients);
+        ASSERT_EQ(updated.levels(), fresh.levels());
+        for (int l = 0; l < fresh.levels(); ++l)
+          ASSERT_EQ(updated.download_level(l), fresh.download_level(l)) << "level " << l << " after " << e.x0 << ","
+                                                                        << e.y0 << " " << e.width << "×" << e.height;
+        EXPECT_EQ(updated.max_coeff(), fresh.max_coeff());
+      }
+      EXPECT_NE(updated.download_level(std::min(1, updated.levels() - 1)), before) << "the edits reached level 1";
+    }
+}
+
+TEST_F(GpuPyramidTest, AnUpdateNeedsAnUpdatableBuildAndARectangleInTheField) {
+  const terrain::HeightField f = void_filled_field(40, 30, 8);
+  const Buffer heights = Buffer::from(std::span<const float>(f.heights));
+  GpuPyramid gpu;
+  gpu.build(heights, f.width, f.height, terrain::PyramidOptions{.k_v = 4});
+  EXPECT_THROW(gpu.update(heights, {1, 1, 2, 2}), std::logic_error);
+  gpu.build(heights, f.width, f.height, terrain::PyramidOptions{.k_v = 4}, true, true);
+  EXPECT_THROW(gpu.update(heights, {39, 0, 2, 2}), std::invalid_argument);
+  EXPECT_THROW(gpu.update(heights, {-1, 0, 2, 2}), std::invalid_argument);
+  EXPECT_NO_THROW(gpu.update(heights, {39, 29, 1, 1}));
+}
+
 TEST_F(GpuPyramidTest, RejectsBadInput) {
   GpuPyramid gpu;
   const Buffer small(16);

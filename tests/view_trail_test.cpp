@@ -143,7 +143,8 @@ Projected project(const glm::dvec3& p) {
 
 using Image = std::vector<std::uint8_t>;
 
-Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double clear_depth = 1.0) {
+Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double clear_depth = 1.0,
+           double width_px = kTrailWidthPx) {
   OffscreenTarget target(kSize, kSize);
   target.bind();
   glEnable(GL_DEPTH_TEST);
@@ -152,7 +153,7 @@ Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double cl
   glClearDepth(clear_depth);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   TrailDraw trails(trail);
-  trails.draw(test_view_proj(), kExaggeration, drawn_until_s);
+  trails.draw(test_view_proj(), kExaggeration, drawn_until_s, width_px);
   glFinish();
   return target.read_rgb();
 }
@@ -237,6 +238,42 @@ TEST_F(TrailDrawTest, DepthTestedAgainstWhatIsAlreadyDrawn) {
   for (double y : {5.0, 20.0, 35.0}) EXPECT_TRUE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "y = " << y;
   for (double y : {60.0, 80.0, 200.0})
     EXPECT_FALSE(drawn_near(img, project({-40.0, y, 50.0}).pixel, 1)) << "hidden, y = " << y;
+}
+
+// Drawn pixels along image row y.
+int lit_in_row(const Image& img, int y) {
+  int n = 0;
+  for (int x = 0; x < kSize; ++x) n += at(img, x, y) != glm::vec3(0.0f);
+  return n;
+}
+
+TEST_F(TrailDrawTest, AsWideAsAskedAcrossTheSegment) {
+  // Track B alone runs north, up the screen: a row crosses it nearly square.
+  const std::vector<TrailPolyline> trail = trail_polylines(track_b(), same, TrailColour::ClimbRate);
+  for (double width : {1.0, 3.0, 6.0}) {
+    const Image img = draw(trail, 1e12, 1.0, width);
+    const int y = static_cast<int>(project({40.0, 120.0, 50.0}).pixel.y);
+    EXPECT_NEAR(lit_in_row(img, y), width, 1.0) << "width " << width;
+  }
+}
+
+TEST_F(TrailDrawTest, ASegmentFromBehindTheEyeIsDrawnInFrontOfIt) {
+  // Ends 500 m south-west of the eye, behind it (10 m below, as drawn ×2) or on its plane
+  // (175 m below: w = 0, no projection at all), to 200 m ahead, 50 m up.
+  for (const double z_behind : {220.0, 137.5}) {
+    const glm::dvec3 behind{-300.0, -500.0, z_behind}, ahead{40.0, 200.0, 25.0};
+    const std::vector<flight::PlacedFix> fixes = {{0.0, behind}, {1.0, ahead}};
+    const std::vector<TrailPolyline> trail = trail_polylines(fixes, same, TrailColour::Altitude);
+    ASSERT_EQ(trail.size(), 1u);
+    const Image img = draw(trail, 1e12);
+    for (double t : {0.8, 0.9, 1.0}) {
+      const Projected q = project(glm::mix(behind, ahead, t));
+      ASSERT_TRUE(inside(q.pixel)) << t;
+      EXPECT_TRUE(drawn_near(img, q.pixel, 1)) << "z " << z_behind << ", t = " << t;
+      if (t < 1.0)  // at its width: the end behind the eye moved in front of it, not projected
+        EXPECT_NEAR(lit_in_row(img, static_cast<int>(q.pixel.y)), kTrailWidthPx, 1.0) << "z " << z_behind << ", t = " << t;
+    }
+  }
 }
 
 }  // namespace

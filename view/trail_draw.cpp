@@ -41,6 +41,7 @@ TrailDraw::TrailDraw(std::span<const TrailPolyline> polylines)
     ends_.push_back(static_cast<std::int32_t>(times_.size()));
   }
   counts_.resize(firsts_.size());
+  segment_firsts_.resize(firsts_.size());
   if (!packed.empty()) vertices_ = gpu::Buffer::from(std::span<const float>(packed));
   glCreateVertexArrays(1, &vao_);
   gpu::throw_on_gl_error("TrailDraw");
@@ -48,22 +49,29 @@ TrailDraw::TrailDraw(std::span<const TrailPolyline> polylines)
 
 TrailDraw::~TrailDraw() { glDeleteVertexArrays(1, &vao_); }
 
-void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s) {
+void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s, double width_px) {
   if (firsts_.empty()) return;
-  // Up to the first vertex after the cut: the fragment stage drops that segment's rest.
+  // Up to the first vertex after the cut (the fragment stage drops that segment's rest):
+  // its segments, six vertices each, the k-th from vertex first + k.
   for (std::size_t k = 0; k < firsts_.size(); ++k) {
     const auto begin = times_.begin() + firsts_[k], end = times_.begin() + ends_[k];
     const auto after = std::upper_bound(begin, end, drawn_until_s);
-    counts_[k] = static_cast<std::int32_t>(after == begin ? 0 : (after == end ? end : after + 1) - begin);
+    const auto vertices = static_cast<std::int32_t>(after == begin ? 0 : (after == end ? end : after + 1) - begin);
+    counts_[k] = 6 * std::max(vertices - 1, 0);
+    segment_firsts_[k] = 6 * firsts_[k];
   }
+  GLint viewport[4] = {0, 0, 1, 1};
+  glGetIntegerv(GL_VIEWPORT, viewport);
   const glm::mat4 vp(view_proj);
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));
   program_.set("exaggeration", static_cast<float>(exaggeration));
   program_.set("drawn_until", static_cast<float>(drawn_until_s - time_origin_));
+  program_.set("width_px", static_cast<float>(width_px));
+  program_.set("viewport", static_cast<float>(viewport[2]), static_cast<float>(viewport[3]));
   vertices_.bind_storage(kVertexBinding);
   glBindVertexArray(vao_);
-  glMultiDrawArrays(GL_LINE_STRIP, firsts_.data(), counts_.data(), static_cast<GLsizei>(firsts_.size()));
+  glMultiDrawArrays(GL_TRIANGLES, segment_firsts_.data(), counts_.data(), static_cast<GLsizei>(firsts_.size()));
   glBindVertexArray(0);
   gpu::throw_on_gl_error("TrailDraw::draw");
 }

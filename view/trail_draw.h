@@ -15,6 +15,9 @@
 
 namespace skylit::view {
 
+// Wide enough to follow at 1280×720 (a 1-pixel line is lost against the relief).
+inline constexpr double kTrailWidthPx = 3.0;
+
 class TrailDraw {
  public:
   // Uploads the polylines once; they are drawn as they are (no gap is bridged).
@@ -23,17 +26,17 @@ class TrailDraw {
   TrailDraw(const TrailDraw&) = delete;
   TrailDraw& operator=(const TrailDraw&) = delete;
 
-  // Every polyline up to drawn_until_s (UTC), its last segment cut at that instant; z
-  // scaled by the exaggeration as the terrain and the aircraft are (like the aircraft,
-  // without the terrain's curvature drop).
-  void draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s);
+  // Every polyline up to drawn_until_s (UTC), its last segment cut at that instant,
+  // width_px pixels wide; z scaled by the exaggeration as the terrain and the aircraft
+  // are (like the aircraft, without the terrain's curvature drop).
+  void draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s, double width_px = kTrailWidthPx);
 
  private:
   gpu::GraphicsProgram program_;
   gpu::Buffer vertices_;
   std::vector<double> times_;  // per vertex, UTC: how much of each polyline to draw
   std::vector<std::int32_t> firsts_, ends_;  // per polyline: its vertices [first, end)
-  std::vector<std::int32_t> counts_;         // per draw
+  std::vector<std::int32_t> counts_, segment_firsts_;  // per draw: its segments' vertices
   double time_origin_ = 0.0;  // the shader's times are float seconds after it
   std::uint32_t vao_ = 0;
 };

@@ -46,7 +46,7 @@ void main() {
   vec2 along = sb - sa;
   along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
   vec2 across = vec2(-along.y, along.x) * width_px / viewport;  // half the width, in NDC
-  // Corners 0 1 2 / 2 1 3 of (a −), (a +), (b −), (b +).
+  // Corners 0 1 2 / 2 1 3 of (a -), (a +), (b -), (b +).
   int k = corner < 3 ? corner : corner == 3 ? 2 : corner == 4 ? 1 : 3;
   bool at_b = k >= 2;
   float side = (k & 1) == 0 ? -1.0 : 1.0;

@@ -491,11 +491,8 @@ struct GpuProductPipeline::Impl {
   double sync_pyramid(const terrain::HeightField& f, const horizon::MarchOptions& m, std::size_t& uploaded) {
     if (pyramid_field_id == f.id.value() && pyramid_revision == f.revision) return 0.0;
     const auto start = Clock::now();
-    const terrain::PixelRect& d = f.last_dirty;
-    const bool one_edit = pyramid->updatable() && pyramid_field_id == f.id.value() && f.revision == pyramid_revision + 1 &&
-                          d.x0 >= 0 && d.y0 >= 0 && d.x1() <= f.width && d.y1() <= f.height;
-    if (one_edit) {
-      pyramid->update(field.heights(), d);
+    if (pyramid->updatable() && pyramid_field_id == f.id.value() && f.one_edit_since(pyramid_revision)) {
+      pyramid->update(field.heights(), f.last_dirty);
     } else {
       uploaded += pyramid->build(field.heights(), f.width, f.height, horizon::march_pyramid_options(m),
                                  !bilinear_levels(m), refresh_budget > 0);
@@ -826,10 +823,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // Incremental: the texels to recompute into the kept visibility, the rest read from it.
   std::vector<terrain::PixelRect> refresh_rects;
   if (kept_field && mOptions.subsample == 1) {
-    const terrain::PixelRect& d = field.last_dirty;
-    if (k.refresh_budget > 0 && field.revision == k.vis_revision + 1 && !d.empty() && d.x0 >= 0 && d.y0 >= 0 &&
-        d.x1() <= w && d.y1() <= h) {
-      refresh_rects = {k.refresh.edit(d, kRefreshMarginTexels)};
+    if (k.refresh_budget > 0 && field.one_edit_since(k.vis_revision)) {
+      refresh_rects = {k.refresh.edit(field.last_dirty, kRefreshMarginTexels)};
     } else if (field.revision == k.vis_revision && !k.refresh.complete()) {
       refresh_rects = k.refresh.refine(k.refresh_budget > 0 ? k.refresh_budget : texels);
     }
@@ -1105,7 +1100,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   }
   std::size_t refreshed = 0;
   for (const terrain::PixelRect& r : refresh_rects) refreshed += static_cast<std::size_t>(r.width) * r.height;
-  const std::size_t work = (incremental ? texels : 0) + (incremental ? refreshed : texels);
+  const std::size_t work = incremental ? texels + refreshed : texels;  // the reader's pass, then the rectangles
   std::size_t done = 0;
   for (int r0 = 0; r0 < h; r0 += chunk) {
     const int rows = std::min(chunk, h - r0);

@@ -26,8 +26,7 @@ std::size_t ResidentField::sync(const terrain::HeightField& field) {
     throw std::invalid_argument("GPU pipeline: malformed height field");
   const terrain::PixelRect& dirty = field.last_dirty;
   const bool edited = field.id.value() == mSourceId && field.width == mWidth && field.height == mHeight && field.dy == mDy &&
-                      field.dx_per_row == mDx && field.revision == mRevision + 1 && !dirty.empty() &&
-                      dirty.x0 >= 0 && dirty.y0 >= 0 && dirty.x1() <= field.width && dirty.y1() <= field.height;
+                      field.dx_per_row == mDx && field.one_edit_since(mRevision);
   const bool unchanged = field.id.value() == mSourceId && field.width == mWidth && field.height == mHeight &&
                          field.dy == mDy && field.dx_per_row == mDx && field.revision == mRevision;
   if (unchanged) return 0;  // every change goes through mark_dirty (terrain/height_field.h)

@@ -31,6 +31,11 @@ bool HeightField::any_nodata() const {
   return std::any_of(valid.begin(), valid.end(), [](std::uint8_t v) { return v == 0; });
 }
 
+bool HeightField::one_edit_since(std::uint64_t since_revision) const {
+  const PixelRect& d = last_dirty;
+  return revision == since_revision + 1 && !d.empty() && d.x0 >= 0 && d.y0 >= 0 && d.x1() <= width && d.y1() <= height;
+}
+
 void HeightField::mark_dirty(const PixelRect& rect) {
   const int x0 = std::max(rect.x0, 0), y0 = std::max(rect.y0, 0);
   const int x1 = std::min(rect.x1(), width), y1 = std::min(rect.y1(), height);

@@ -73,6 +73,10 @@ struct HeightField {
   // Record that the heights inside `rect` (clipped to the grid) changed.
   void mark_dirty(const PixelRect& rect);
   void mark_all_dirty() { mark_dirty(bounds()); }
+  // Whether exactly one change since `since_revision` (a copy kept of the field then)
+  // touched only last_dirty, a rectangle inside the grid: what an incremental update of
+  // that copy needs.
+  bool one_edit_since(std::uint64_t since_revision) const;
 };
 
 }  // namespace skylit::terrain

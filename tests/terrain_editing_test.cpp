@@ -48,6 +48,22 @@ TEST(TerrainEditing, ReplaceHeightsTracksRevision) {
   EXPECT_EQ(f.at(5, 1), 105);     // untouched
 }
 
+// What an incremental copy of the field may rely on: one change since its revision, and a
+// rectangle inside the grid.
+TEST(TerrainEditing, OneEditSinceIsOneMarkOfANonEmptyRectangle) {
+  HeightField f = numbered(8, 6);
+  const auto rev = f.revision;
+  EXPECT_FALSE(f.one_edit_since(rev));  // nothing since
+  f.mark_dirty({2, 1, 3, 2});
+  EXPECT_TRUE(f.one_edit_since(rev));
+  EXPECT_FALSE(f.one_edit_since(rev + 1));
+  f.mark_dirty({6, 4, 5, 5});  // clipped to the grid: still one edit since the last
+  EXPECT_TRUE(f.one_edit_since(rev + 1));
+  EXPECT_FALSE(f.one_edit_since(rev));  // two since the first
+  f.mark_dirty({20, 20, 2, 2});  // wholly outside: an empty rectangle says nothing
+  EXPECT_FALSE(f.one_edit_since(rev + 2));
+}
+
 TEST(TerrainEditing, ReplaceHeightsValidates) {
   HeightField f = numbered(8, 6);
   const auto rev = f.revision;

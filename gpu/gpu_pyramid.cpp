@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +40,11 @@ GlslDefines solve_defines() {
       .set("MAX_BINDING", kMax)
       .set("OFF_DIAGONAL", terrain::kBSplineOffDiagonal);
   return d;
+}
+
+void check_heights(const Buffer& heights, int width, int height) {
+  if (heights.size_bytes() < static_cast<std::size_t>(width) * height * sizeof(float))
+    throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
 }
 
 int to_index(std::size_t v, const char* what) {
@@ -99,8 +103,7 @@ void GpuPyramid::bind_level(unsigned binding, int l) const {
 std::size_t GpuPyramid::build(const Buffer& heights, int width, int height, const terrain::PyramidOptions& options,
                               bool coefficients, bool updatable) {
   if (width < 1 || height < 1) throw std::invalid_argument("GPU pyramid: empty height field");
-  if (heights.size_bytes() < static_cast<std::size_t>(width) * height * sizeof(float))
-    throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
+  check_heights(heights, width, height);
   std::size_t uploaded = 0;
   const bool same = width == mWidth && height == mHeight && options.k_v == mOptions.k_v &&
                     options.levels == mOptions.levels && options.min_size == mOptions.min_size;
@@ -164,8 +167,7 @@ void GpuPyramid::update(const Buffer& heights, const terrain::PixelRect& dirty) 
   if (!mUpdatable) throw std::logic_error("GpuPyramid::update: the last build was not updatable");
   if (dirty.x0 < 0 || dirty.y0 < 0 || dirty.x1() > mWidth || dirty.y1() > mHeight)
     throw std::invalid_argument("GpuPyramid::update: the edited rectangle is outside the field");
-  if (heights.size_bytes() < static_cast<std::size_t>(mWidth) * mHeight * sizeof(float))
-    throw std::invalid_argument("GPU pyramid: the heights buffer is smaller than the field");
+  check_heights(heights, mWidth, mHeight);
   if (!dirty.empty()) compute(heights, dirty);
 }
 
@@ -182,8 +184,6 @@ void GpuPyramid::compute(const Buffer& heights, const terrain::PixelRect& window
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   // The filter reads through buffer textures (pyramid_filter.comp says why).
   const BufferTexture heights_tex(heights), weights_tex(mWeights);
-  std::optional<BufferTexture> scratch_tex;
-  if (!mUpdatable) scratch_tex.emplace(mScratch);
   weights_tex.bind_sampler(kWeights);
   auto set_window = [&](int x0, int y0, int x1, int y1) {
     mFilter.set_uniform("out_x0", x0);
@@ -211,9 +211,8 @@ void GpuPyramid::compute(const Buffer& heights, const terrain::PixelRect& window
       set_window(cx0, window.y0, cx1, window.y1());
       mFilter.dispatch_covering(cx1 - cx0, window.height);
       // y pass: those rows' columns → the level's samples (kept, or in its coefficients' range).
-      std::optional<BufferTexture> level_rows_tex;
-      if (mUpdatable) level_rows_tex.emplace(rows);
-      (mUpdatable ? *level_rows_tex : *scratch_tex).bind_sampler(kSrc);
+      const BufferTexture rows_tex(rows);
+      rows_tex.bind_sampler(kSrc);
       if (mUpdatable) {
         mSamples.bind_storage_range(kDst, mOffsets[l] * sizeof(float),
                                     static_cast<std::size_t>(s.width) * s.height * sizeof(float));

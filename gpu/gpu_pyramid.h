@@ -81,8 +81,8 @@ class GpuPyramid {
   std::vector<terrain::LevelShape> mShapes;
   std::vector<std::size_t> mOffsets;
   // Per level: tap-table base of the x and y passes (l ≥ 1), pivot-table base of the
-  // row and column solves, in mTaps / mWeights.
-  // The inputs each output reads, clamped (first, last) per axis, for update()'s windows.
+  // row and column solves, in mTaps / mWeights; the inputs each output reads, clamped
+  // (first, last) per axis, for update()'s windows.
   struct LevelTables {
     int taps_x = 0, taps_y = 0, factors_x = 0, factors_y = 0;
     std::vector<std::pair<int, int>> reads_x, reads_y;

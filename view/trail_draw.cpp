@@ -41,7 +41,7 @@ TrailDraw::TrailDraw(std::span<const TrailPolyline> polylines)
     ends_.push_back(static_cast<std::int32_t>(times_.size()));
   }
   counts_.resize(firsts_.size());
-  segment_firsts_.resize(firsts_.size());
+  for (std::int32_t first : firsts_) segment_firsts_.push_back(6 * first);  // six vertices a segment
   if (!packed.empty()) vertices_ = gpu::Buffer::from(std::span<const float>(packed));
   glCreateVertexArrays(1, &vao_);
   gpu::throw_on_gl_error("TrailDraw");
@@ -52,13 +52,12 @@ TrailDraw::~TrailDraw() { glDeleteVertexArrays(1, &vao_); }
 void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s, double width_px) {
   if (firsts_.empty()) return;
   // Up to the first vertex after the cut (the fragment stage drops that segment's rest):
-  // its segments, six vertices each, the k-th from vertex first + k.
+  // its segments, the k-th from vertex first + k.
   for (std::size_t k = 0; k < firsts_.size(); ++k) {
     const auto begin = times_.begin() + firsts_[k], end = times_.begin() + ends_[k];
     const auto after = std::upper_bound(begin, end, drawn_until_s);
     const auto vertices = static_cast<std::int32_t>(after == begin ? 0 : (after == end ? end : after + 1) - begin);
     counts_[k] = 6 * std::max(vertices - 1, 0);
-    segment_firsts_[k] = 6 * firsts_[k];
   }
   GLint viewport[4] = {0, 0, 1, 1};
   glGetIntegerv(GL_VIEWPORT, viewport);

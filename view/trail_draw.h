@@ -36,7 +36,7 @@ class TrailDraw {
   gpu::Buffer vertices_;
   std::vector<double> times_;  // per vertex, UTC: how much of each polyline to draw
   std::vector<std::int32_t> firsts_, ends_;  // per polyline: its vertices [first, end)
-  std::vector<std::int32_t> counts_, segment_firsts_;  // per draw: its segments' vertices
+  std::vector<std::int32_t> segment_firsts_, counts_;  // per draw: its segments' vertices
   double time_origin_ = 0.0;  // the shader's times are float seconds after it
   std::uint32_t vao_ = 0;
 };

@@ -5,6 +5,7 @@
 #include "shading/blockers/disc_occlusion.h"
 #include "shading/reference_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -99,6 +100,19 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
                             view(sun_bins_, sun_bins_tex_, packed(bins.flat_sun()), TextureFormat::R32F);
   tiles_x_ = bins.tiles_x();
   tiles_ = bins.tiles_x() * bins.tiles_y();
+  sky_rects_.clear();
+  for (int ty = 0; ty < bins.tiles_y(); ++ty)
+    for (int tx = 0; tx < bins.tiles_x();) {
+      if (bins.sky(tx * blockers::kBinTexels, ty * blockers::kBinTexels).empty()) {
+        ++tx;
+        continue;
+      }
+      const int first = tx;
+      while (tx < bins.tiles_x() && !bins.sky(tx * blockers::kBinTexels, ty * blockers::kBinTexels).empty()) ++tx;
+      const int x0 = first * blockers::kBinTexels, y0 = ty * blockers::kBinTexels;
+      sky_rects_.push_back({x0, y0, std::min(tx * blockers::kBinTexels, field.width) - x0,
+                            std::min(y0 + blockers::kBinTexels, field.height) - y0});
+    }
   // Per sphere: this times r² (sphere_blocker.h's cull_error_per_area), or a constant.
   const blockers::BlockerOptions& b = blocking.blocker;
   min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;

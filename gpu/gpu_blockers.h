@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace skylit::gpu {
 
@@ -43,12 +44,17 @@ class GpuBlockers {
                      const shading::ProductOptions& options);
   // Binds the buffers and sets a kernel's uniforms of sphere_blockers.glsl.
   void bind(const ComputeProgram& program) const;
+  // The texels whose sky bins list a sphere after the last upload(): runs of such tiles
+  // along each row of tiles, clipped to the field (the only texels the spheres' sky
+  // change reaches).
+  const std::vector<terrain::PixelRect>& sky_rects() const { return sky_rects_; }
 
  private:
   BlockerBindings bindings_;
   Buffer spheres_, sky_bins_, sun_bins_, cap_log_, groups_, order_;
   BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_, groups_tex_, order_tex_;
   int tiles_x_ = 0, tiles_ = 0;
+  std::vector<terrain::PixelRect> sky_rects_;
   double min_cap_solid_angle_ = 0.0, min_cap_per_area_ = 0.0;
   bool ratio_attenuation_ = false;
 };

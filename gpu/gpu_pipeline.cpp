@@ -64,6 +64,7 @@ enum Binding : int {
   kSweepGamma = 17,  // horizon_sweep.comp on curved rows: Γ of the half rows, in double
   kSweepRowDx = 18,  // and the rows' spacings in double
   kKeptHorizons = 19,  // a blocked pipeline's kept floored horizons (surface_products.comp)
+  kKeptSky = 20,       // the kept sky irradiance (surface_products.comp, SKY_CACHE)
 };
 
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
@@ -374,13 +375,15 @@ struct GpuProductPipeline::Impl {
   bool last_compute_swept = false;  // far_codes() holds the last compute()'s
   std::vector<horizon::Heading> band_headings;
   // surface_products.comp [cache][swept]: on the march's sigma buffer, or [.][1] on the
-  // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE).
+  // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE,
+  // and from the kept visibility, SKY_CACHE 1 keeping the sky irradiance or 2 reading it).
   // Compiled at first use.
-  enum VisCache { kNoCache = 0, kKeepVis = 1, kReadVis = 2 };
+  enum VisCache { kNoCache = 0, kKeepVis = 1, kReadVis = 2, kKeepSky = 3, kReadSky = 4 };
   // [cache][0: marched, 1: swept on one row spacing, 2: swept on curved rows (near
   // steps by each row's spacing)].
-  std::optional<ComputeProgram> products[3][3];
+  std::optional<ComputeProgram> products[5][3];
   GlslDefines products_defines;
+  int blocked = 0;  // BLOCKERS of the products kernels (kReadSky's: 0)
   std::optional<glm::vec3> products_sun_dir;  // lit: the sun's direction (unit, toward it)
   void set_products_sun(const ComputeProgram& p) const {
     if (!products_sun_dir || !p.has_uniform("sun_dir")) return;  // absent when the sun is off (SUN_LIT 0)
@@ -389,11 +392,17 @@ struct GpuProductPipeline::Impl {
   }
   const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept, bool one_dx,
                                         VisCache cache = kNoCache) {
-    if (cache == kReadVis) swept = false;  // no horizons read
+    if (cache >= kReadVis) swept = false;  // no horizons read
     const int kind = swept ? (one_dx ? 1 : 2) : 0;
     if (!products[cache][kind]) {
       GlslDefines d = products_defines;
-      d.set("SWEPT", swept ? 1 : 0).set("VIS_CACHE", cache).set("VIS_BINDING", kVis).set("KEPT_HORIZON_BINDING", kKeptHorizons);
+      d.set("SWEPT", swept ? 1 : 0)
+          .set("VIS_CACHE", std::min<int>(cache, kReadVis))
+          .set("SKY_CACHE", cache == kKeepSky ? 1 : cache == kReadSky ? 2 : 0)
+          .set("BLOCKERS", cache == kReadSky ? 0 : blocked)
+          .set("VIS_BINDING", kVis)
+          .set("KEPT_HORIZON_BINDING", kKeptHorizons)
+          .set("KEPT_SKY_BINDING", kKeptSky);
       if (swept) {
         d.set("RAY_TEXTURES", 1)
             .set("ONE_DX", one_dx ? 1 : 0)
@@ -418,6 +427,13 @@ struct GpuProductPipeline::Impl {
   // catch up after an edit (0: the edit recomputes all).
   VisibilityRefresh refresh;
   std::size_t refresh_budget = 0;
+  // The kept sky irradiance (lit products, keep_sky_irradiance): CHANNELS floats per
+  // texel, channel-major, from the kept visibility of (sky_field_id, sky_revision) under
+  // the sky model sky_model (held, so that its address is not another sky's later).
+  Buffer kept_sky;
+  bool keep_sky = false, sky_valid = false;
+  std::uint64_t sky_field_id = 0, sky_revision = 0;
+  std::shared_ptr<const sky::SkyModel> sky_model;
   int vis_rows = 0;
   int frames = 0;  // compute() calls since the visibility was last dropped
   double compile_ms = 0.0;  // kernels compiled since the last compute() began
@@ -469,20 +485,35 @@ struct GpuProductPipeline::Impl {
   // Stage 0: the sun's shadow into `shadow`, marched or swept (shading::sun_sweeps) as
   // the reference does; returns the GPU time (ms). Needs the resident field bound.
   double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
-                   std::size_t& uploaded, Buffer& shadow) {
+                   std::size_t& uploaded, Buffer& shadow, bool* far_reused = nullptr) {
     const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
     const TextureArray* far = nullptr;
     double sweep_ms = 0.0;
-    if (swept) {
+    const bool reuse_far = swept && sun_far_valid && sun_far_field_id == f.id.value() && sun_far_revision == f.revision &&
+                           horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance;
+    if (far_reused) *far_reused = reuse_far;
+    if (reuse_far) {
+      far = &sweep_textures.sun_far;
+    } else if (swept) {
       GpuTimer timer;
       {
         ScopedGpuTimer timing(timer);
         far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, field, sweep_textures);
       }
       sweep_ms = timer.elapsed_ms();
+      sun_far_valid = sun_heading_tolerance > 0.0;
+      sun_far_field_id = f.id.value();
+      sun_far_revision = f.revision;
+      sun_far_heading = sun_heading;
     }
     return sweep_ms + sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
   }
+  // The sun's far slopes kept for later compute()s (set_sun_heading_tolerance): valid for
+  // one field revision and the heading they were swept along.
+  double sun_heading_tolerance = 0.0;
+  bool sun_far_valid = false;
+  std::uint64_t sun_far_field_id = 0, sun_far_revision = 0;
+  horizon::Heading sun_far_heading;
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   std::uint64_t pyramid_field_id = 0, pyramid_revision = 0;  // the field it was built from
   // The pyramid of the resident field `f`: updated in place after one edit of the field it
@@ -528,6 +559,8 @@ struct GpuProductPipeline::Impl {
     return timer.elapsed_ms();
   }
   Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
+  // `table` (and its view) from ShadingSetup::sky, in place when the size stays.
+  void upload_sky_tables(const std::vector<float>& sky, shading::ShadingMode mode);
   BufferTexture gamma_tex;  // Γ's view (sh_product.glsl)
   BufferTexture table_tex;  // the surface kernel's view (table mode)
   int channels = 1;               // output bands of shaded/irradiance
@@ -665,7 +698,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     if (shading_options.shaded.mode == shading::ShadingMode::SkyBrdfTable)
       k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
   }
-  prod.set("BLOCKERS", blocked ? 1 : 0);
+  k.blocked = blocked ? 1 : 0;
   if (blocked) add_blocker_defines(options, kBlockerBindings, true, prod);
   k.products_defines = prod;
   if (lit) k.products_sun_dir = glm::vec3(options.lighting->sun.direction);
@@ -684,6 +717,7 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
     throw std::logic_error("GpuProductPipeline::set_lighting: the lighting differs in what the kernels bake in");
   shading::validate(lighting);
   const shading::Lighting& now = *mOptions.lighting;
+  const std::shared_ptr<const sky::SkyModel> now_sky = now.sky;
   // The same sky object, sun and tone map: the uniforms and tables are set already (the
   // first frame's lighting is the constructor's; the bench repeats one).
   if (lighting.sky == now.sky && lighting.sun.direction == now.sun.direction && lighting.sun.dni == now.sun.dni &&
@@ -698,22 +732,30 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
   }
   k.blocker_sun_dir = glm::vec3(lighting.sun.direction);
   if (!needs_visibility(mProduct)) return;
-  GlslDefines unused;  // the kernels' defines are the same (same_baked_lighting)
-  const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGammaUnit, unused);
-  k.sun_dni = shading.sun_dni;
-  if (k.table.size_bytes() == shading.sky.size() * sizeof(float)) {
-    k.table.upload(shading.sky.data(), k.table.size_bytes());
-  } else {
-    k.table_tex = BufferTexture();
-    k.table = Buffer::from(std::span<const float>(shading.sky));
-    if (mOptions.shaded.mode == shading::ShadingMode::SkyBrdfTable)
-      k.table_tex = BufferTexture(k.table, TextureFormat::RGBA32F);
-  }
   k.display_per_irradiance = shading::shaded_display_scale(mOptions.shaded, lighting);
   k.products_sun_dir = glm::vec3(lighting.sun.direction);
+  // The sky's tables depend on the sky model alone: the same one keeps them.
+  if (lighting.sky == now_sky) {
+    k.sun_dni = channel_dni(lighting, shading::rgb_bands(mProduct, mOptions));
+  } else {
+    GlslDefines unused;  // the kernels' defines are the same (same_baked_lighting)
+    const ShadingSetup shading = shading_setup(mProduct, mOptions, kTable, kGammaUnit, unused);
+    k.sun_dni = shading.sun_dni;
+    k.upload_sky_tables(shading.sky, mOptions.shaded.mode);
+  }
   for (const auto& row : k.products)
     for (const auto& p : row)
       if (p) k.set_products_sun(*p);
+}
+
+void GpuProductPipeline::Impl::upload_sky_tables(const std::vector<float>& sky, shading::ShadingMode mode) {
+  if (table.size_bytes() == sky.size() * sizeof(float)) {
+    table.upload(sky.data(), table.size_bytes());
+  } else {
+    table_tex = BufferTexture();
+    table = Buffer::from(std::span<const float>(sky));
+    if (mode == shading::ShadingMode::SkyBrdfTable) table_tex = BufferTexture(table, TextureFormat::RGBA32F);
+  }
 }
 
 void GpuProductPipeline::set_exposure(double exposure) {
@@ -727,6 +769,21 @@ void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
 
 void GpuProductPipeline::set_refresh_budget(std::size_t texels_per_frame) { mImpl->refresh_budget = texels_per_frame; }
 
+void GpuProductPipeline::set_sun_heading_tolerance(double radians) {
+  if (!(radians >= 0.0) || radians > kMaxSunHeadingTolerance)
+    throw std::invalid_argument("sun heading tolerance must be within 0 … " + std::to_string(kMaxSunHeadingTolerance) + " rad");
+  mImpl->sun_heading_tolerance = radians;
+  if (radians == 0.0) mImpl->sun_far_valid = false;
+}
+
+void GpuProductPipeline::keep_sky_irradiance(bool keep) {
+  mImpl->keep_sky = keep;
+  if (!keep) {
+    mImpl->sky_valid = false;
+    mImpl->kept_sky = Buffer();
+  }
+}
+
 void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) {
   if (!mImpl->blockers) throw std::logic_error("GpuProductPipeline::set_spheres: the pipeline was built without blockers");
   mImpl->spheres.assign(spheres.begin(), spheres.end());
@@ -734,6 +791,8 @@ void GpuProductPipeline::set_spheres(std::span<const blockers::Sphere> spheres) 
 
 void GpuProductPipeline::drop_visibility() {
   Impl& k = *mImpl;
+  k.sky_valid = false;
+  k.kept_sky = Buffer();
   k.vis = Buffer();
   k.kept_horizons = Buffer();
   k.vis_valid = false;
@@ -793,7 +852,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     t.upload_ms = ms_since(upload_start);
     if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
     Buffer shadow;
-    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
     t.sun_ms += k.blocker_sun_stage(field);
     shading::ProductBands out{w, h, 1, {}, {std::string(shading::product_name(mProduct))}};
     if (on_gpu) {
@@ -852,6 +911,28 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     }
   }
   t.horizons_reused = reuse;
+  // A reused visibility's frame reads the kept sky irradiance under the same sky model
+  // (kReadSky), else computes it and keeps it (kKeepSky).
+  Impl::VisCache read_cache = Impl::kReadVis;
+  if (!reuse) k.sky_valid = false;
+  if (reuse && k.keep_sky && shading::uses_lighting(mProduct, mOptions)) {
+    if (k.sky_valid && k.sky_field_id == field.id.value() && k.sky_revision == field.revision &&
+        k.sky_model == mOptions.lighting->sky) {
+      read_cache = Impl::kReadSky;
+    } else {
+      const std::size_t sky_bytes = texels * static_cast<std::size_t>(k.channels) * sizeof(float);
+      try {
+        check_storage_size(sky_bytes, "GPU pipeline: the kept sky irradiance");
+        if (k.kept_sky.size_bytes() != sky_bytes) {
+          k.kept_sky = Buffer();
+          k.kept_sky = Buffer(sky_bytes);
+        }
+        read_cache = Impl::kKeepSky;
+      } catch (const std::runtime_error&) {  // over one storage buffer: computed every frame
+      }
+    }
+  }
+  t.sky_reused = read_cache == Impl::kReadSky;
 
   // Stage 1: the marcher's step schedule (C++) and the height pyramid, built on the GPU
   // from the resident heights (rebuilt whole on every call; its tables stay resident).
@@ -960,7 +1041,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
   Buffer shadow;
   if (k.sun[0]) {
-    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow);
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
     t.sun_ms += k.blocker_sun_stage(field);
     heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
@@ -971,13 +1052,14 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // length.
   const bool one_dx = !mOptions.exact && horizon::one_row_spacing(field);
   const ComputeProgram& products =
-      k.products_kernel(mOptions, sweep, one_dx, reuse ? Impl::kReadVis : keep ? Impl::kKeepVis : Impl::kNoCache);
+      k.products_kernel(mOptions, sweep, one_dx, reuse ? read_cache : keep ? Impl::kKeepVis : Impl::kNoCache);
   if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
   if (may_refresh) k.products_kernel(mOptions, false, one_dx, Impl::kKeepVis);
   if (reuse || keep) {
     k.vis.bind_storage(kVis);
     if (k.blockers) k.kept_horizons.bind_storage(kKeptHorizons);
   }
+  if (read_cache != Impl::kReadVis) k.kept_sky.bind_storage(kKeptSky);
   if (k.blockers) k.blockers->bind(products);
   if (sweep) {
     const TextureArray& far = SweepTextures::array(k.sweep_textures.far, k.sweep_textures.far_size, w, h, bands);
@@ -1090,14 +1172,18 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
                       out.data.begin() + static_cast<std::ptrdiff_t>(field_at(b, j)));
     }
   };
-  const ComputeProgram* reader = incremental ? &k.products_kernel(mOptions, false, one_dx, Impl::kReadVis) : nullptr;
-  if (reader) {  // every texel from the kept visibility, then the refreshed ones recomputed
-    set_grid_uniforms(*reader, field);
-    if (reader->has_uniform("grid_dx")) reader->set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
-    if (reader->has_uniform("first_distance")) reader->set_uniform("first_distance", static_cast<float>(first_distance));
-    if (reader->has_uniform("half_texel_floor")) reader->set_uniform("half_texel_floor", sweep ? 1 : 0);
-    if (k.blockers) k.blockers->bind(*reader);
-  }
+  // The kernel that reads the kept visibility, for a pass of its own over some texels.
+  auto kept_reader = [&]() -> const ComputeProgram& {
+    const ComputeProgram& p = k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);
+    set_grid_uniforms(p, field);
+    if (p.has_uniform("grid_dx")) p.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
+    if (p.has_uniform("first_distance")) p.set_uniform("first_distance", static_cast<float>(first_distance));
+    if (p.has_uniform("half_texel_floor")) p.set_uniform("half_texel_floor", sweep ? 1 : 0);
+    if (k.blockers) k.blockers->bind(p);
+    return p;
+  };
+  // Incremental: every texel from the kept visibility, then the refreshed ones recomputed.
+  const ComputeProgram* reader = incremental ? &kept_reader() : nullptr;
   std::size_t refreshed = 0;
   for (const terrain::PixelRect& r : refresh_rects) refreshed += static_cast<std::size_t>(r.width) * r.height;
   const std::size_t work = incremental ? texels + refreshed : texels;  // the reader's pass, then the rectangles
@@ -1108,6 +1194,12 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     else run_block(march, products, r0, rows, 0, w);
     done += static_cast<std::size_t>(rows) * w;
     if (progress) progress(0.99 * static_cast<double>(done) / static_cast<double>(work));
+  }
+  // The kept sky's frame: the texels the spheres' sky reaches, shaded whole.
+  if (read_cache == Impl::kReadSky && k.blockers) {
+    const ComputeProgram& whole = kept_reader();
+    for (const terrain::PixelRect& r : k.blockers->sky_rects())
+      for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) run_block(nullptr, whole, r0, std::min(chunk, r.y1() - r0), r.x0, r.width);
   }
   for (const terrain::PixelRect& r : refresh_rects)
     for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) {
@@ -1131,6 +1223,12 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   } else if (eight_bit) {
     for (float& v : out.data)
       if (!std::isnan(v)) v = shading::display_code_value(mOptions.shaded.albedo * v * mOptions.shaded.exposure, mOptions.shaded.tone);
+  }
+  if (read_cache == Impl::kKeepSky) {
+    k.sky_valid = true;
+    k.sky_field_id = field.id.value();
+    k.sky_revision = field.revision;
+    k.sky_model = mOptions.lighting->sky;
   }
   if (keep) {
     k.vis_valid = true;

@@ -108,6 +108,20 @@ class GpuProductPipeline {
   // compute() recomputes the whole field as the options say. Sub-sampled horizons
   // (subsample > 1) always recompute the whole field.
   void set_refresh_budget(std::size_t texels_per_frame);
+  // Where the sun's horizon is swept (shading::sun_sweeps), keep its far slopes for later
+  // compute()s on the same field revision while the sun's heading stays within `radians`
+  // of the heading they were swept along; the sun's pass (its near steps, the disc)
+  // still runs for the frame's own sun. A far slope from k texels away then belongs to a
+  // ray up to k·radians texels off the sun's (docs/accuracy.md measures what that costs).
+  // 0, the default: every compute() sweeps, as the reference does.
+  void set_sun_heading_tolerance(double radians);
+  static constexpr double kMaxSunHeadingTolerance = 0.1;  // rad (5.7°)
+  // Lit products on a kept visibility: keep each texel's sky irradiance π·V·T(n) without
+  // spheres, and read it in later compute()s on the same field revision under the same
+  // sky model (the same Lighting::sky object, whose tables set_lighting then keeps too);
+  // texels a sphere's sky bin reaches are shaded whole, and the sun term is every
+  // frame's own, so the frames equal those without keeping bit for bit. Off by default.
+  void keep_sky_irradiance(bool keep);
   // The texels next to an edit whose normals and kernels read it.
   static constexpr int kRefreshMarginTexels = horizon::kKernelMarginTexels;
 

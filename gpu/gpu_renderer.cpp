@@ -110,6 +110,8 @@ GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::Product
   pipeline.set_exposure(options.shaded.exposure);
   pipeline.keep_visibility(keep_);
   pipeline.set_refresh_budget(refresh_budget_);
+  pipeline.set_sun_heading_tolerance(sun_heading_tolerance_);
+  pipeline.keep_sky_irradiance(keep_sky_);
   return pipeline;
 }
 

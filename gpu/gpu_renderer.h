@@ -40,6 +40,11 @@ class GpuRenderer final : public shading::Renderer {
   void expect_frames(int frames) override { keep_ = frames > 1; }
   void drop_horizons() override;
   void set_refresh_budget(std::size_t texels_per_frame) override { refresh_budget_ = texels_per_frame; }
+  // GpuProductPipeline::set_sun_heading_tolerance for every frame's pipeline (the viewer's
+  // frames: view::kSunHeadingTolerance); 0, the default, sweeps the sun every frame.
+  void set_sun_heading_tolerance(double radians) { sun_heading_tolerance_ = radians; }
+  // GpuProductPipeline::keep_sky_irradiance for every frame's pipeline (the viewer's).
+  void keep_sky_irradiance(bool keep) { keep_sky_ = keep; }
   std::optional<std::string> lacks_blockers(shading::Product product,
                                             const shading::ProductOptions& options) const override;
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
@@ -78,6 +83,8 @@ class GpuRenderer final : public shading::Renderer {
   shading::ProductOptions options_;
   bool keep_ = false;
   std::size_t refresh_budget_ = 0;
+  double sun_heading_tolerance_ = 0.0;
+  bool keep_sky_ = false;
   int frames_ = 0;
   std::deque<Entry> cache_;
   const GpuProductPipeline* last_ = nullptr;

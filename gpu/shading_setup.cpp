@@ -59,6 +59,11 @@ void add_gamma(int order, int gamma_binding, ShadingSetup& out, GlslDefines& d) 
 
 }  // namespace
 
+std::vector<double> channel_dni(const shading::Lighting& lighting, bool rgb) {
+  if (!rgb) return {sky::luminance(lighting.sun.dni)};
+  return {lighting.sun.dni[0], lighting.sun.dni[1], lighting.sun.dni[2]};
+}
+
 void add_blocker_shading(const shading::ProductOptions& options, int gamma_binding, ShadingSetup& setup,
                          GlslDefines& d) {
   const ShadingMode mode = options.shaded.mode;
@@ -83,7 +88,7 @@ ShadingSetup shading_setup(shading::Product product, const shading::ProductOptio
     const shading::Lighting& l = *options.lighting;
     const bool rgb = shading::rgb_bands(product, options);
     out.channels = rgb ? 3 : 1;
-    for (int c = 0; c < out.channels; ++c) out.sun_dni.push_back(rgb ? l.sun.dni[c] : sky::luminance(l.sun.dni));
+    out.sun_dni = channel_dni(l, rgb);
     skies = shading::channel_sky_inputs(l, rgb, mode, s.sh_order);
   } else {
     skies.push_back(shading::sky_input(mode, s.sh_order, shading::uniform_sky_radiance(), true));

@@ -33,6 +33,9 @@ struct ShadingSetup {
 ShadingSetup shading_setup(shading::Product product, const shading::ProductOptions& options, int table_binding,
                            int gamma_binding, GlslDefines& defines);
 
+// The sun's DNI per output channel (ShadingSetup::sun_dni): R, G, B, or the luminance.
+std::vector<double> channel_dni(const shading::Lighting& lighting, bool rgb);
+
 // What sphere blockers add to a setup (surface_products.comp with BLOCKERS): Γ for
 // the SH product V_T ∗ exp*(f_S) and the HYB_* defines of options.blockers.hyb, where
 // the shading mode has not set them (the log-BRDF mode adds f_S to its own log and

@@ -83,6 +83,7 @@ struct LightingRequest {
   double turbidity = kDefaultTurbidity;
   bool sun = true;                         // false: sky light only
   double sky_scale = 1.0;                  // <file> skies: pixel value multiplier
+  bool operator==(const LightingRequest&) const = default;
 };
 
 // Every check that needs neither the DEM nor the sky map: the time parses with an

@@ -62,6 +62,11 @@ struct FrameTimings {
   std::size_t refreshed_texels = 0;
   // Texels whose kept visibility is still that of the field before its last edit.
   std::size_t stale_texels = 0;
+  // The sun's far slopes were those of an earlier frame (GpuRenderer::set_sun_heading_tolerance).
+  bool sun_far_reused = false;
+  // The sky irradiance of the texels no sphere reaches was an earlier frame's
+  // (GpuRenderer::keep_sky_irradiance).
+  bool sky_reused = false;
 };
 
 class Renderer {

@@ -57,6 +57,7 @@ struct CameraRow {
   double shading_ms = 0;
   int horizons_computed = 0;
   long stale_texels = 0;  // shading still waiting for the refresh after a brush edit
+  int sun_swept = 0;       // the sun's far slopes swept this frame, not kept from an earlier one
   glm::dmat4 view_proj{1.0};
 };
 
@@ -69,7 +70,7 @@ std::vector<CameraRow> read_camera_log(const std::string& path) {
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream in(line);
     CameraRow r;
-    in >> r.frame >> r.time >> r.eye.x >> r.eye.y >> r.eye.z >> r.width >> r.height >> r.shading_ms >> r.horizons_computed >> r.stale_texels;
+    in >> r.frame >> r.time >> r.eye.x >> r.eye.y >> r.eye.z >> r.width >> r.height >> r.shading_ms >> r.horizons_computed >> r.stale_texels >> r.sun_swept;
     for (int c = 0; c < 4; ++c)
       for (int k = 0; k < 4; ++k) in >> r.view_proj[c][k];
     if (in) rows.push_back(r);
@@ -294,6 +295,9 @@ TEST(ViewWindow, BrushChangesTheTerrainUnderTheClick) {
   EXPECT_EQ(log[7].stale_texels, 0);
   EXPECT_EQ(log[7].horizons_computed, 1);
   for (int k : {8, 9}) EXPECT_EQ(log[k].horizons_computed + log[k].stale_texels, 0) << k;
+  // The sun stands still: its far slopes are swept on the first frame and on each edit's,
+  // and kept on every other (view::kSunHeadingTolerance).
+  for (const CameraRow& row : log) EXPECT_EQ(row.sun_swept, row.frame == 0 || (row.frame >= 3 && row.frame <= 5) ? 1 : 0) << row.frame;
   // Refreshed texels are marched where the whole frame sweeps: the two methods' horizons
   // differ by about half a code on average, a few codes at most (docs/viewer.md).
   ASSERT_EQ(part.after.v.size(), b.v.size());

@@ -83,6 +83,8 @@ SceneView::SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& fie
   renderer_.set_field(field);
   renderer_.set_options(options);
   renderer_.expect_frames(2);  // many frames: keep the visibility between them
+  renderer_.set_sun_heading_tolerance(kSunTolerance);
+  renderer_.keep_sky_irradiance(true);
 }
 
 ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool measure) {
@@ -102,6 +104,7 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   const gpu::GpuFrame& shaded = *shaded_;
   t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
   t.stale_texels = renderer_.last_timings().stale_texels;
+  t.sun_far_reused = frame.reuse_shading || renderer_.last_timings().sun_far_reused;
   t.texels = field_.size();
   terrain_.sync(field_);
   t.shading_ms = lap();

@@ -15,6 +15,7 @@
 #include "view/camera.h"
 #include "view/offscreen_target.h"
 #include "view/scene_view.h"
+#include "view/sky_reuse.h"
 
 #include <chrono>
 #include <cmath>
@@ -109,6 +110,7 @@ int run_render(const RenderArgs& a) {
   shading::ProductOptions options;
   options.shaded.tone = tone_curve(a.light);
   sv::SceneView scene(renderer, field, options);
+  sv::SkyReuse sky_reuse(sv::kSunTolerance);
   sv::OffscreenTarget target(width, height);
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
   if (mode) rig.set_mode(*mode);
@@ -125,7 +127,7 @@ int run_render(const RenderArgs& a) {
     shading::LightingRequest request = a.light.request;
     request.time = shading::format_instant({t});
     sv::ViewFrame frame;
-    frame.shading.lighting = shading::resolve_lighting(request, place).lighting;
+    frame.shading.lighting = sky_reuse.next(request, shading::resolve_lighting(request, place).lighting);
     if (aircraft) frame.shading.spheres = aircraft->spheres_at(t);
     frame.style.tone = options.shaded.tone;
     frame.style.exaggeration = a.exaggeration;

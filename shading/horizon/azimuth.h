@@ -30,5 +30,9 @@ inline Heading heading_from_geographic(double geographic) {
   return {snap_to_zero(std::sin(geographic)), snap_to_zero(std::cos(geographic))};
 }
 inline Heading heading_from_math(double phi) { return {snap_to_zero(std::cos(phi)), snap_to_zero(std::sin(phi))}; }
+// The angle between two headings (radians, 0 … π).
+inline double heading_angle(Heading a, Heading b) {
+  return std::abs(std::atan2(a.east * b.north - a.north * b.east, a.east * b.east + a.north * b.north));
+}
 
 }  // namespace skylit::horizon

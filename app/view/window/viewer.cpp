@@ -33,6 +33,7 @@
 #include "view/camera.h"
 #include "view/offscreen_target.h"
 #include "view/scene_view.h"
+#include "view/sky_reuse.h"
 #include "view/timeline.h"
 #include "view/trail_draw.h"
 
@@ -124,6 +125,7 @@ class Viewer {
   std::optional<shade::TrackedAircraft> aircraft_;
   GlfwWindow window_;
   gpu::GpuRenderer renderer_;
+  sv::SkyReuse sky_reuse_{sv::kSunTolerance};
   shading::ProductOptions options_;
   std::unique_ptr<sv::SceneView> scene_;
   double exaggeration_;
@@ -195,7 +197,7 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!o.camera_log.empty()) {
     camera_log_.open(o.camera_log);
     if (!camera_log_) throw std::invalid_argument("--camera-log '" + o.camera_log + "' cannot be written");
-    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms,horizons_computed,stale_texels";
+    camera_log_ << "frame,time_s,eye_x,eye_y,eye_z,width,height,shading_ms,horizons_computed,stale_texels,sun_swept";
     for (int k = 0; k < 16; ++k) camera_log_ << ",vp" << k;
     camera_log_ << "\n";
   }
@@ -364,7 +366,7 @@ sv::ViewFrame Viewer::make_frame() {
   info_.sun_azimuth_deg = lit.sun_azimuth_deg;
   info_.sun_elevation_deg = lit.sun_elevation_deg;
   sv::ViewFrame frame;
-  frame.shading.lighting = lit.lighting;
+  frame.shading.lighting = sky_reuse_.next(request, lit.lighting);
   if (aircraft_) frame.shading.spheres = aircraft_->spheres_at(t);
   frame.style.tone = options_.shaded.tone;
   frame.style.exaggeration = exaggeration_;
@@ -380,9 +382,9 @@ void Viewer::log_camera(int k, const sv::ViewFrame& f, int width, int height) {
   if (!camera_log_) return;
   const glm::dmat4 vp = f.camera.proj * f.camera.view;
   char line[192];
-  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f,%d,%zu", k, timeline_->time(), f.camera.eye.x,
+  std::snprintf(line, sizeof line, "%d,%.3f,%.6f,%.6f,%.6f,%d,%d,%.3f,%d,%zu,%d", k, timeline_->time(), f.camera.eye.x,
                 f.camera.eye.y, f.camera.eye.z, width, height, info_.timings.shading_ms,
-                info_.timings.horizons_reused ? 0 : 1, info_.timings.stale_texels);
+                info_.timings.horizons_reused ? 0 : 1, info_.timings.stale_texels, info_.timings.sun_far_reused ? 0 : 1);
   camera_log_ << line;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) {

@@ -83,6 +83,7 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   v.pixels_per_radian = pixels_per_radian;
   v.max_error_px = style.max_error_px;
   v.exaggeration = style.exaggeration;
+  v.curvature = style.curvature && pixels_per_radian > 0.0 ? 0.5 / kEarthRadiusM : 0.0;
   const std::vector<LodNode> nodes = lod_.select(v);
   nodes_ = nodes.size();
 

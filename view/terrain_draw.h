@@ -22,7 +22,7 @@ inline constexpr double kEarthRadiusM = 6371008.8;
 struct TerrainStyle {
   double exaggeration = 1.0;
   bool curvature = true;
-  double max_error_px = 2.0;
+  double max_error_px = 2.0;  // the mesh's geometric error on screen (TerrainLod)
   shading::ToneCurve tone = shading::ToneCurve::Srgb;
 };
 

@@ -20,6 +20,8 @@ TerrainLod::TerrainLod(const terrain::HeightField& field)
     level.nodes_x = nodes_for(width_, span);
     level.nodes_y = nodes_for(height_, span);
     level.range.assign(static_cast<std::size_t>(level.nodes_x) * level.nodes_y, glm::vec2(0.0f));
+    level.error.assign(level.range.size(), 0.0f);
+    level.block_error.assign(bounds_.empty() ? level.range.size() : bounds_[0].range.size(), 0.0f);
     bounds_.push_back(std::move(level));
     span *= 2;
   } while (bounds_.back().nodes_x > 1 || bounds_.back().nodes_y > 1);
@@ -32,7 +34,39 @@ void TerrainLod::update(const terrain::HeightField& field, const terrain::PixelR
   const int ni0 = std::max(0, (rect.x0 - 1) / kPatchQuads), nj0 = std::max(0, (rect.y0 - 1) / kPatchQuads);
   const int ni1 = std::min(bounds_[0].nodes_x - 1, rect.x1() / kPatchQuads);
   const int nj1 = std::min(bounds_[0].nodes_y - 1, rect.y1() / kPatchQuads);
+  for (int l = 1; l < levels(); ++l) update_block_errors(field, l, rect);
   build_parents(ni0, nj0, ni1, nj1);
+}
+
+void TerrainLod::update_block_errors(const terrain::HeightField& field, int level, const terrain::PixelRect& rect) {
+  const int s = 1 << level;
+  std::vector<float>& errors = bounds_[static_cast<std::size_t>(level)].block_error;
+  const int nx = bounds_[0].nodes_x, ny = bounds_[0].nodes_y;
+  // An edited texel moves the triangles of the quads it is a corner of: s texels around.
+  const int bi0 = std::max(0, (rect.x0 - s - 1) / kPatchQuads), bj0 = std::max(0, (rect.y0 - s - 1) / kPatchQuads);
+  const int bi1 = std::min(nx - 1, (rect.x1() + s) / kPatchQuads), bj1 = std::min(ny - 1, (rect.y1() + s) / kPatchQuads);
+  for (int bj = bj0; bj <= bj1; ++bj)
+    for (int bi = bi0; bi <= bi1; ++bi) {
+      float worst = 0.0f;
+      for (int j = bj * kPatchQuads; j <= std::min(height_ - 1, (bj + 1) * kPatchQuads); ++j) {
+        // The quad holding texel (i, j): vertices every s texels from 0, the last clamped
+        // to the field's edge (as view_terrain.vert places them); its triangles (00, 10,
+        // 01) and (10, 11, 01).
+        const int y0 = std::min(j / s * s, std::max(height_ - 2, 0)), y1 = std::min(y0 + s, height_ - 1);
+        for (int i = bi * kPatchQuads; i <= std::min(width_ - 1, (bi + 1) * kPatchQuads); ++i) {
+          const int x0 = std::min(i / s * s, std::max(width_ - 2, 0)), x1 = std::min(x0 + s, width_ - 1);
+          if (x1 == x0 || y1 == y0) continue;
+          const float u = static_cast<float>(i - x0) / static_cast<float>(x1 - x0);
+          const float v = static_cast<float>(j - y0) / static_cast<float>(y1 - y0);
+          const float h00 = field.at(x0, y0), h10 = field.at(x1, y0), h01 = field.at(x0, y1), h11 = field.at(x1, y1);
+          const float mesh = u + v <= 1.0f ? h00 + u * (h10 - h00) + v * (h01 - h00)
+                                           : h11 + (1.0f - u) * (h01 - h11) + (1.0f - v) * (h10 - h11);
+          const float e = std::abs(field.at(i, j) - mesh);
+          if (e > worst) worst = e;  // NaN (nodata) never counts
+        }
+      }
+      errors[static_cast<std::size_t>(bj) * nx + bi] = worst;
+    }
 }
 
 void TerrainLod::build_level0(const terrain::HeightField& field, const terrain::PixelRect& rect) {
@@ -61,14 +95,26 @@ void TerrainLod::build_parents(int ni0, int nj0, int ni1, int nj1) {
     for (int nj = nj0; nj <= std::min(nj1, level.nodes_y - 1); ++nj)
       for (int ni = ni0; ni <= std::min(ni1, level.nodes_x - 1); ++ni) {
         glm::vec2 r(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+        float e = 0.0f;  // the blocks' of this level, then the children's
+        const int per = 1 << l;
+        for (int bj = nj * per; bj < std::min((nj + 1) * per, bounds_[0].nodes_y); ++bj)
+          for (int bi = ni * per; bi < std::min((ni + 1) * per, bounds_[0].nodes_x); ++bi)
+            e = std::max(e, level.block_error[static_cast<std::size_t>(bj) * bounds_[0].nodes_x + bi]);
         for (int cj = 2 * nj; cj <= std::min(2 * nj + 1, child.nodes_y - 1); ++cj)
           for (int ci = 2 * ni; ci <= std::min(2 * ni + 1, child.nodes_x - 1); ++ci) {
-            const glm::vec2 c = child.range[static_cast<std::size_t>(cj) * child.nodes_x + ci];
-            r = {std::min(r.x, c.x), std::max(r.y, c.y)};
+            const std::size_t c = static_cast<std::size_t>(cj) * child.nodes_x + ci;
+            r = {std::min(r.x, child.range[c].x), std::max(r.y, child.range[c].y)};
+            e = std::max(e, child.error[c]);
           }
         level.range[static_cast<std::size_t>(nj) * level.nodes_x + ni] = r;
+        level.error[static_cast<std::size_t>(nj) * level.nodes_x + ni] = e;
       }
   }
+}
+
+double TerrainLod::error(int level, int ni, int nj) const {
+  const Level& l = bounds_.at(static_cast<std::size_t>(level));
+  return l.error.at(static_cast<std::size_t>(nj) * l.nodes_x + ni);
 }
 
 glm::dvec2 TerrainLod::bounds(int level, int ni, int nj) const {
@@ -107,8 +153,12 @@ void TerrainLod::visit(int level, int ni, int nj, const LodView& view, std::vect
   if (split && view.pixels_per_radian > 0.0) {
     const glm::dvec3 nearest = glm::clamp(view.eye, lo, hi);
     const double distance = std::max(glm::length(view.eye - nearest), 1e-3);
-    const double spacing = stride * std::max(dx_, dy_);
-    split = spacing / distance * view.pixels_per_radian > view.max_error_px;
+    // A quadratic a·x² is missed by at most a·h²/4 by its chords of length h; a
+    // triangle's longest side is the quad's diagonal.
+    const double side = stride * std::max(dx_, dy_);
+    const double error = l.error[static_cast<std::size_t>(nj) * l.nodes_x + ni] * view.exaggeration +
+                         view.curvature * 2.0 * side * side / 4.0;
+    split = error / distance * view.pixels_per_radian > view.max_error_px;
   }
   if (!split) {
     out.push_back({i0, j0, stride});

@@ -1,8 +1,13 @@
 // The terrain mesh's level of detail by screen-space error: a quadtree over the height
 // field whose node at level l covers kPatchQuads · 2^l texels with one vertex every 2^l
-// texels. A node is split while its vertex spacing, seen from the eye, exceeds the
-// allowed pixels; nodes outside the view frustum are dropped by their height bounds.
-// Neighbours of different levels meet with a skirt (view_terrain.vert), not a crack.
+// texels, drawn as two triangles per quad (view/terrain_draw.cpp's diagonal). Each node
+// knows its geometric error: the largest vertical distance between its triangles and
+// the field's heights inside it, and no less than its children's. A node is split while
+// that error (exaggerated, plus what the triangles miss of the curvature drop), seen
+// from the eye, exceeds the allowed pixels; nodes outside the view frustum are dropped
+// by their height bounds. Smooth ground thus gets coarse triangles near the eye and
+// rough ground fine ones far away; the light does not depend on it (texture-space
+// shading). Neighbours of different levels meet with a skirt (view_terrain.vert).
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -25,8 +30,9 @@ struct LodView {
   glm::dmat4 view_proj{1.0};  // field frame (x east, y north, z up) to clip space
   glm::dvec3 eye{0.0};
   double pixels_per_radian = 1000.0;  // viewport height / (2 tan(fovy / 2)); 0: orthographic
-  double max_error_px = 2.0;          // vertex spacing allowed on screen
+  double max_error_px = 2.0;          // geometric error allowed on screen (Cesium's default too)
   double exaggeration = 1.0;
+  double curvature = 0.0;             // 1 / (2 R) where the drawing drops the ground by d² / (2 R)
 };
 
 class TerrainLod {
@@ -43,6 +49,8 @@ class TerrainLod {
   int levels() const { return static_cast<int>(bounds_.size()); }
   // Height range (min, max) of the node at `level` and node index (ni, nj).
   glm::dvec2 bounds(int level, int ni, int nj) const;
+  // Its geometric error (m, unexaggerated; 0 at level 0).
+  double error(int level, int ni, int nj) const;
   double spacing_x() const { return dx_; }
   double spacing_y() const { return dy_; }
 
@@ -50,8 +58,13 @@ class TerrainLod {
   struct Level {
     int nodes_x = 0, nodes_y = 0;
     std::vector<glm::vec2> range;  // per node: min, max height
+    std::vector<float> error;      // per node: geometric error (m)
+    // Per level-0 node's block of texels: the largest |height − triangle| of this level's
+    // triangles there (an edit recomputes the blocks near it, not whole nodes).
+    std::vector<float> block_error;
   };
   void build_level0(const terrain::HeightField& field, const terrain::PixelRect& rect);
+  void update_block_errors(const terrain::HeightField& field, int level, const terrain::PixelRect& rect);
   void build_parents(int ni0, int nj0, int ni1, int nj1);
   void visit(int level, int ni, int nj, const LodView& view, std::vector<LodNode>& out) const;
 

@@ -115,6 +115,10 @@ void ComputeProgram::set_uniform(std::string_view name, float x, float y, float 
   glProgramUniform3f(mProgram, uniform_location(name), x, y, z);
 }
 
+void ComputeProgram::set_uniform(std::string_view name, int x, int y) const {
+  glProgramUniform2i(mProgram, uniform_location(name), x, y);
+}
+
 void ComputeProgram::dispatch_covering(int nx, int ny, int nz) const {
   const int gx = groups(nx, mLocalSize[0]), gy = groups(ny, mLocalSize[1]),
             gz = groups(nz, mLocalSize[2]);

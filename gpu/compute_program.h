@@ -42,6 +42,7 @@ class ComputeProgram {
   void set_uniform(std::string_view name, float value) const;
   void set_uniform(std::string_view name, double value) const;  // a GLSL double
   void set_uniform(std::string_view name, float x, float y, float z) const;  // vec3
+  void set_uniform(std::string_view name, int x, int y) const;                // ivec2
 
   // Binds the program and dispatches enough work groups to cover nx × ny × nz
   // invocations (the shader must skip the excess). Then a full memory barrier, so the

@@ -35,6 +35,29 @@ std::size_t view(Buffer& buffer, BufferTexture& texture, std::vector<float> valu
   return buffer.size_bytes();
 }
 
+// Runs of tiles whose sky (or sun) bins list a sphere, along each row of tiles, as texel
+// rectangles clipped to the field.
+std::vector<terrain::PixelRect> busy_rects(const blockers::SphereBins& bins, const terrain::HeightField& field, bool sky) {
+  auto busy = [&](int tx, int ty) {
+    const int i = tx * blockers::kBinTexels, j = ty * blockers::kBinTexels;
+    return !(sky ? bins.sky(i, j) : bins.sun(i, j)).empty();
+  };
+  std::vector<terrain::PixelRect> out;
+  for (int ty = 0; ty < bins.tiles_y(); ++ty)
+    for (int tx = 0; tx < bins.tiles_x();) {
+      if (!busy(tx, ty)) {
+        ++tx;
+        continue;
+      }
+      const int first = tx;
+      while (tx < bins.tiles_x() && busy(tx, ty)) ++tx;
+      const int x0 = first * blockers::kBinTexels, y0 = ty * blockers::kBinTexels;
+      out.push_back({x0, y0, std::min(tx * blockers::kBinTexels, field.width) - x0,
+                     std::min(y0 + blockers::kBinTexels, field.height) - y0});
+    }
+  return out;
+}
+
 }  // namespace
 
 std::optional<std::string> gpu_lacks_blockers(shading::Product product, const shading::ProductOptions& options) {
@@ -100,19 +123,8 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
                             view(sun_bins_, sun_bins_tex_, packed(bins.flat_sun()), TextureFormat::R32F);
   tiles_x_ = bins.tiles_x();
   tiles_ = bins.tiles_x() * bins.tiles_y();
-  sky_rects_.clear();
-  for (int ty = 0; ty < bins.tiles_y(); ++ty)
-    for (int tx = 0; tx < bins.tiles_x();) {
-      if (bins.sky(tx * blockers::kBinTexels, ty * blockers::kBinTexels).empty()) {
-        ++tx;
-        continue;
-      }
-      const int first = tx;
-      while (tx < bins.tiles_x() && !bins.sky(tx * blockers::kBinTexels, ty * blockers::kBinTexels).empty()) ++tx;
-      const int x0 = first * blockers::kBinTexels, y0 = ty * blockers::kBinTexels;
-      sky_rects_.push_back({x0, y0, std::min(tx * blockers::kBinTexels, field.width) - x0,
-                            std::min(y0 + blockers::kBinTexels, field.height) - y0});
-    }
+  sky_rects_ = busy_rects(bins, field, true);
+  sun_rects_ = busy_rects(bins, field, false);
   // Per sphere: this times r² (sphere_blocker.h's cull_error_per_area), or a constant.
   const blockers::BlockerOptions& b = blocking.blocker;
   min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;

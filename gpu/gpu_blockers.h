@@ -48,13 +48,15 @@ class GpuBlockers {
   // along each row of tiles, clipped to the field (the only texels the spheres' sky
   // change reaches).
   const std::vector<terrain::PixelRect>& sky_rects() const { return sky_rects_; }
+  // Likewise the texels whose sun bins list a sphere (blocker_sun.comp's).
+  const std::vector<terrain::PixelRect>& sun_rects() const { return sun_rects_; }
 
  private:
   BlockerBindings bindings_;
   Buffer spheres_, sky_bins_, sun_bins_, cap_log_, groups_, order_;
   BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_, groups_tex_, order_tex_;
   int tiles_x_ = 0, tiles_ = 0;
-  std::vector<terrain::PixelRect> sky_rects_;
+  std::vector<terrain::PixelRect> sky_rects_, sun_rects_;
   double min_cap_solid_angle_ = 0.0, min_cap_per_area_ = 0.0;
   bool ratio_attenuation_ = false;
 };

@@ -264,12 +264,9 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
 
 // SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
 // horizon_sweep.comp on the resident heights and row spacings (one layer).
+// The resident heights and row spacings must be bound as buffer textures.
 const TextureArray& sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
-                                   const shading::ProductOptions& o, horizon::Heading u, const ResidentField& resident,
-                                   SweepTextures& textures) {
-  const BufferTexture heights_tex(resident.heights()), row_dx_tex(resident.row_dx());
-  heights_tex.bind_sampler(kHeights);
-  row_dx_tex.bind_sampler(kRowDx);
+                                   const shading::ProductOptions& o, horizon::Heading u, SweepTextures& textures) {
   const TextureArray& far =
       SweepTextures::array(textures.sun_far, textures.sun_far_size, field.width, field.height, 1);
   sweep_pass(sweep, field, shading::sun_shadow_options(o).march, {u}, far, textures);
@@ -488,6 +485,10 @@ struct GpuProductPipeline::Impl {
                    std::size_t& uploaded, Buffer& shadow, bool* far_reused = nullptr) {
     const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
     const TextureArray* far = nullptr;
+    // The resident heights and row spacings as buffer textures, for the sweep and the pass.
+    const BufferTexture heights_tex(field.heights()), row_dx_tex(field.row_dx());
+    heights_tex.bind_sampler(kHeights);
+    row_dx_tex.bind_sampler(kRowDx);
     double sweep_ms = 0.0;
     const bool reuse_far = swept && sun_far_valid && sun_far_field_id == f.id.value() && sun_far_revision == f.revision &&
                            horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance;
@@ -498,7 +499,7 @@ struct GpuProductPipeline::Impl {
       GpuTimer timer;
       {
         ScopedGpuTimer timing(timer);
-        far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, field, sweep_textures);
+        far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, sweep_textures);
       }
       sweep_ms = timer.elapsed_ms();
       sun_far_valid = sun_heading_tolerance > 0.0;
@@ -552,11 +553,17 @@ struct GpuProductPipeline::Impl {
     set_grid_uniforms(*blocker_sun, f);
     blocker_sun->set_uniform("sun_dir", blocker_sun_dir.x, blocker_sun_dir.y, blocker_sun_dir.z);
     GpuTimer timer;
-    {
-      ScopedGpuTimer timing(timer);
-      blocker_sun->dispatch_covering(f.width, f.height);
+    double ms = 0.0;
+    for (const terrain::PixelRect& r : blockers->sun_rects()) {  // the texels the spheres' sun bins reach
+      blocker_sun->set_uniform("origin", r.x0, r.y0);
+      blocker_sun->set_uniform("extent", r.width, r.height);
+      {
+        ScopedGpuTimer timing(timer);
+        blocker_sun->dispatch_covering(r.width, r.height);
+      }
+      ms += timer.elapsed_ms();
     }
-    return timer.elapsed_ms();
+    return ms;
   }
   Buffer table, gamma;    // shaded and irradiance only (gpu/shading_setup.h)
   // `table` (and its view) from ShadingSetup::sky, in place when the size stays.
@@ -593,7 +600,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
         .set("SHADOW_BINDING", kShadow)
         .set("DISC_RADIUS", disc_radius)
         .set("NEAR_STEPS", shading::sun_shadow_options(options).march.sweep_near_steps)
-        .set("FAR_BINDING", kFar);
+        .set("FAR_BINDING", kFar)
+        .set("RAY_TEXTURES", 1);  // heights by buffer textures: vector gathers on llvmpipe (gpu/buffers.h)
     add_far_code_defines(sun);
     k.sun_defines = sun;
     k.sun_uniforms = sun_uniforms(options.lighting->sun.direction, k.sun_heading);
@@ -1043,7 +1051,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   if (k.sun[0]) {
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
     t.sun_ms += k.blocker_sun_stage(field);
-    heights_tex.bind_sampler(kHeights);  // sun_far_slopes bound its own views there
+    heights_tex.bind_sampler(kHeights);  // sun_stage bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
   }
 

@@ -1,7 +1,8 @@
 #version 450
-// The sun the sphere blockers leave: per texel of the whole field, the terrain's
-// visible disc fraction (sun_shadow.comp) times the fraction of the disc the spheres
-// leave (sphere_blockers.glsl sunLeft). Twin of the reference's
+// The sun the sphere blockers leave: per texel of a rectangle (the C++ dispatches the
+// tiles whose sun bins list a sphere), the terrain's visible disc fraction
+// (sun_shadow.comp) times the fraction of the disc the spheres leave
+// (sphere_blockers.glsl sunLeft). Twin of the reference's
 // shadow *= BlockerFrame::sun_left (shading/reference_renderer.cpp). Texels with no
 // sphere in their sun bin, or no sun, keep their value.
 //
@@ -15,9 +16,13 @@ layout(local_size_x = LOCAL_SIZE_X, local_size_y = LOCAL_SIZE_Y, local_size_z = 
 layout(std430, binding = SHADOW_BINDING) buffer Shadow { float shadow[]; };
 
 uniform vec3 sun_dir;  // unit, toward the sun (east, north, up)
+uniform ivec2 origin;  // the first texel of this dispatch's rectangle
+uniform ivec2 extent;  // and its size
 
 void main() {
-  int i = int(gl_GlobalInvocationID.x), j = int(gl_GlobalInvocationID.y);
+  ivec2 local = ivec2(gl_GlobalInvocationID.xy);
+  if (local.x >= extent.x || local.y >= extent.y) return;
+  int i = origin.x + local.x, j = origin.y + local.y;
   if (i >= grid_width || j >= grid_height) return;
   int texel = j * grid_width + i;
   float f = shadow[texel];

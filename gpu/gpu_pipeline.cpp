@@ -378,7 +378,9 @@ struct GpuProductPipeline::Impl {
   enum VisCache { kNoCache = 0, kKeepVis = 1, kReadVis = 2, kKeepSky = 3, kReadSky = 4 };
   // [cache][0: marched, 1: swept on one row spacing, 2: swept on curved rows (near
   // steps by each row's spacing)].
-  std::optional<ComputeProgram> products[5][3];
+  // [.][.][0]: a blocked pipeline's kernel without the spheres (BLOCKERS 0), for the
+  // texels no sphere's sky bin reaches.
+  std::optional<ComputeProgram> products[5][3][2];
   GlslDefines products_defines;
   int blocked = 0;  // BLOCKERS of the products kernels (kReadSky's: 0)
   std::optional<glm::vec3> products_sun_dir;  // lit: the sun's direction (unit, toward it)
@@ -388,15 +390,17 @@ struct GpuProductPipeline::Impl {
     for (int c = 0; c < channels; ++c) p.set_uniform("sun_dni[" + std::to_string(c) + "]", static_cast<float>(sun_dni[c]));
   }
   const ComputeProgram& products_kernel(const shading::ProductOptions& o, bool swept, bool one_dx,
-                                        VisCache cache = kNoCache) {
+                                        VisCache cache = kNoCache, bool spheres = true) {
     if (cache >= kReadVis) swept = false;  // no horizons read
     const int kind = swept ? (one_dx ? 1 : 2) : 0;
-    if (!products[cache][kind]) {
+    spheres = spheres && blocked && cache != kReadSky;
+    std::optional<ComputeProgram>& slot = products[cache][kind][spheres ? 1 : 0];
+    if (!slot) {
       GlslDefines d = products_defines;
       d.set("SWEPT", swept ? 1 : 0)
           .set("VIS_CACHE", std::min<int>(cache, kReadVis))
           .set("SKY_CACHE", cache == kKeepSky ? 1 : cache == kReadSky ? 2 : 0)
-          .set("BLOCKERS", cache == kReadSky ? 0 : blocked)
+          .set("BLOCKERS", spheres ? 1 : 0)
           .set("VIS_BINDING", kVis)
           .set("KEPT_HORIZON_BINDING", kKeptHorizons)
           .set("KEPT_SKY_BINDING", kKeptSky);
@@ -408,11 +412,11 @@ struct GpuProductPipeline::Impl {
         add_far_code_defines(d);
       }
       const auto compile_start = Clock::now();
-      products[cache][kind].emplace(ComputeProgram::from_embedded("surface_products.comp", d));
+      slot.emplace(ComputeProgram::from_embedded("surface_products.comp", d));
       compile_ms += ms_since(compile_start);
-      set_products_sun(*products[cache][kind]);
+      set_products_sun(*slot);
     }
-    return *products[cache][kind];
+    return *slot;
   }
   // The kept visibility: SH_COEFFS floats per texel, coefficient-major, and in a blocked
   // pipeline the AZIMUTHS floored horizon slopes, band-major, for the field revision
@@ -751,9 +755,10 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
     k.sun_dni = shading.sun_dni;
     k.upload_sky_tables(shading.sky, mOptions.shaded.mode);
   }
-  for (const auto& row : k.products)
-    for (const auto& p : row)
-      if (p) k.set_products_sun(*p);
+  for (const auto& by_cache : k.products)
+    for (const auto& by_kind : by_cache)
+      for (const auto& p : by_kind)
+        if (p) k.set_products_sun(*p);
 }
 
 void GpuProductPipeline::Impl::upload_sky_tables(const std::vector<float>& sky, shading::ShadingMode mode) {
@@ -1059,8 +1064,15 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // adds each texel's near steps). Stage 3: the product. Row chunks bound a dispatch's
   // length.
   const bool one_dx = !mOptions.exact && horizon::one_row_spacing(field);
-  const ComputeProgram& products =
-      k.products_kernel(mOptions, sweep, one_dx, reuse ? read_cache : keep ? Impl::kKeepVis : Impl::kNoCache);
+  const Impl::VisCache cache = reuse ? read_cache : keep ? Impl::kKeepVis : Impl::kNoCache;
+  // A blocked frame shades the whole field without the spheres and then, again with
+  // them, the texels their sky bins reach (llvmpipe runs both sides of a branch: one
+  // kernel would pay the spheres' code everywhere). A frame that keeps the visibility
+  // runs the blocked kernel everywhere (it keeps the floored horizons the spheres' cull
+  // reads later), and so does a sub-sampled one (its march runs on whole coarse rows).
+  // A one-off frame (no cache) measured no gain: its horizons' march dominates.
+  const bool sphere_pass = k.blockers && cache != Impl::kKeepVis && cache != Impl::kNoCache && s == 1;
+  const ComputeProgram& products = k.products_kernel(mOptions, sweep, one_dx, cache, !sphere_pass);
   if (keep) k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);  // compiled now: later frames only read
   if (may_refresh) k.products_kernel(mOptions, false, one_dx, Impl::kKeepVis);
   if (reuse || keep) {
@@ -1180,15 +1192,18 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
                       out.data.begin() + static_cast<std::ptrdiff_t>(field_at(b, j)));
     }
   };
-  // The kernel that reads the kept visibility, for a pass of its own over some texels.
-  auto kept_reader = [&]() -> const ComputeProgram& {
-    const ComputeProgram& p = k.products_kernel(mOptions, false, one_dx, Impl::kReadVis);
+  // A products kernel's uniforms and spheres set, for a pass of its own over some texels.
+  auto prepared = [&](const ComputeProgram& p) -> const ComputeProgram& {
     set_grid_uniforms(p, field);
     if (p.has_uniform("grid_dx")) p.set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
     if (p.has_uniform("first_distance")) p.set_uniform("first_distance", static_cast<float>(first_distance));
     if (p.has_uniform("half_texel_floor")) p.set_uniform("half_texel_floor", sweep ? 1 : 0);
     if (k.blockers) k.blockers->bind(p);
     return p;
+  };
+  // The one that reads the kept visibility.
+  auto kept_reader = [&]() -> const ComputeProgram& {
+    return prepared(k.products_kernel(mOptions, false, one_dx, Impl::kReadVis));
   };
   // Incremental: every texel from the kept visibility, then the refreshed ones recomputed.
   const ComputeProgram* reader = incremental ? &kept_reader() : nullptr;
@@ -1203,11 +1218,15 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     done += static_cast<std::size_t>(rows) * w;
     if (progress) progress(0.99 * static_cast<double>(done) / static_cast<double>(work));
   }
-  // The kept sky's frame: the texels the spheres' sky reaches, shaded whole.
-  if (read_cache == Impl::kReadSky && k.blockers) {
-    const ComputeProgram& whole = kept_reader();
+  // The texels the spheres' sky reaches, shaded again with them (the kept sky's frame
+  // reads the kept visibility there).
+  if (sphere_pass && !incremental) {
+    const bool read_vis = cache == Impl::kReadSky || cache == Impl::kReadVis;
+    const ComputeProgram& spheres =
+        read_vis ? kept_reader() : prepared(k.products_kernel(mOptions, sweep, one_dx, cache, true));
     for (const terrain::PixelRect& r : k.blockers->sky_rects())
-      for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) run_block(nullptr, whole, r0, std::min(chunk, r.y1() - r0), r.x0, r.width);
+      for (int r0 = r.y0; r0 < r.y1(); r0 += chunk)
+        run_block(read_vis ? nullptr : march, spheres, r0, std::min(chunk, r.y1() - r0), r.x0, r.width);
   }
   for (const terrain::PixelRect& r : refresh_rects)
     for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) {

@@ -41,8 +41,9 @@ class GpuRenderer final : public shading::Renderer {
   void drop_horizons() override;
   void set_refresh_budget(std::size_t texels_per_frame) override { refresh_budget_ = texels_per_frame; }
   // GpuProductPipeline::set_sun_heading_tolerance for every frame's pipeline (the viewer's
-  // frames: view::kSunHeadingTolerance); 0, the default, sweeps the sun every frame.
-  void set_sun_heading_tolerance(double radians) { sun_heading_tolerance_ = radians; }
+  // frames and series: shading::kFrameSunTolerance); 0, the default, sweeps the sun
+  // every frame.
+  void set_sun_heading_tolerance(double radians) override { sun_heading_tolerance_ = radians; }
   // GpuProductPipeline::keep_sky_irradiance for every frame's pipeline (the viewer's).
   void keep_sky_irradiance(bool keep) { keep_sky_ = keep; }
   std::optional<std::string> lacks_blockers(shading::Product product,

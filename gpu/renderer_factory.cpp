@@ -41,6 +41,10 @@ class AutoRenderer final : public shading::Renderer {
     refresh_budget_ = texels_per_frame;
     if (gpu_) gpu_->set_refresh_budget(texels_per_frame);
   }
+  void set_sun_heading_tolerance(double radians) override {
+    sun_heading_tolerance_ = radians;
+    if (gpu_) gpu_->set_sun_heading_tolerance(radians);
+  }
   void drop_horizons() override {
     if (gpu_) gpu_->drop_horizons();
     if (reference_) reference_->drop_horizons();
@@ -106,6 +110,7 @@ class AutoRenderer final : public shading::Renderer {
     gpu_->set_options(options_);
     gpu_->expect_frames(frames_);
     gpu_->set_refresh_budget(refresh_budget_);
+    gpu_->set_sun_heading_tolerance(sun_heading_tolerance_);
   }
   shading::Renderer& reference() {
     if (!reference_) {
@@ -125,6 +130,7 @@ class AutoRenderer final : public shading::Renderer {
   shading::ProductOptions options_;
   int frames_ = 1;
   std::size_t refresh_budget_ = 0;
+  double sun_heading_tolerance_ = 0.0;
   bool last_on_gpu_ = false;
   std::string why_reference_;
   const shading::Renderer* last_ = nullptr;

@@ -4,7 +4,7 @@
 # relief) with no aircraft, one and ten 30-sphere airliners (data/aircraft/airliner.json)
 # ~150 m above the ground, on BACKEND (gpu: the GLSL path, llvmpipe without a GPU;
 # reference: the CPU), against gdaldem hillshade; and a `shadow` replay of the sample
-# glider track. Usage: [PRODUCTS="shaded shadow"] [NO_REPLAY=1] [WORK=DIR] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
+# glider track. Usage: [PRODUCTS="shaded shadow" (empty: the replay alone)] [NO_REPLAY=1] [WORK=DIR] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
 # build. Prints best and median wall time over RUNS per command.
 set -euo pipefail
 size=${1:-1024}
@@ -47,7 +47,7 @@ print_machine
   tr '\r' '\n' | grep 'computed on' || true
 time_runs "gdaldem hillshade ${size}²" gdaldem hillshade -q "$tmp/dem.tif" "$tmp/gd.tif"
 sun=(--sun-azimuth 200 --sun-elevation 35)
-for p in ${PRODUCTS:-shaded shadow}; do
+for p in ${PRODUCTS-shaded shadow}; do
   for a in none one ten; do
     spheres=()
     [ "$a" = none ] || spheres=(--spheres "$tmp/$a.csv")
@@ -62,3 +62,6 @@ time_runs "shadow replay, 61 frames, no track ($backend)" "$skylit" shade "$tmp/
   -o "$tmp/frames_%03d.tif"
 time_runs "shadow replay, 61 frames, airliner on the track ($backend)" "$skylit" shade "$tmp/scene.tif" -p shadow \
   "${replay[@]}" --track "$here/data/tracks/sample_glider.igc" --aircraft airliner -o "$tmp/frames_%03d.tif"
+time_runs "the same, the sun swept every frame (--sun-tolerance 0)" "$skylit" shade "$tmp/scene.tif" -p shadow \
+  "${replay[@]}" --track "$here/data/tracks/sample_glider.igc" --aircraft airliner --sun-tolerance 0 \
+  -o "$tmp/frames_%03d.tif"

@@ -15,6 +15,7 @@
 #include "terrain/height_field.h"
 
 #include <cstddef>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -97,6 +98,12 @@ class Renderer {
   // gpu/visibility_refresh.h); 0, the default, recomputes the whole field at the edit.
   // This default, the reference's, recomputes whole fields whatever the budget.
   virtual void set_refresh_budget(std::size_t /*texels_per_frame*/) {}
+  // Many frames a little apart in time (a replay, the viewer): keep the sun's swept far
+  // slopes while its heading stays within `radians` of the heading they were swept along
+  // (the GPU: GpuProductPipeline::set_sun_heading_tolerance; docs/accuracy.md, "Frame
+  // reuse"). 0, the default, sweeps every frame. This default, the reference's, marches
+  // the sun exactly every frame whatever the tolerance.
+  virtual void set_sun_heading_tolerance(double /*radians*/) {}
 
   // Why this renderer cannot shade sphere blockers in `product` with these options (one
   // line), or nothing. It refuses such frames with std::invalid_argument rather than
@@ -115,6 +122,14 @@ class Renderer {
   virtual ProductBands frame(Product product, const FrameInputs& inputs, const ProgressCallback& progress = {}) = 0;
   virtual const FrameTimings& last_timings() const = 0;
 };
+
+// How far the sun may move before frames that reuse what depends on its position make it
+// again (the viewer's frames, and a series' unless told otherwise): the swept far slopes
+// of its heading and the viewer's sky model. At 1× replay the sun moves 0.05° in 5–20 s
+// of track time. The shadow's mean error against the exact march stays within 1.5× the
+// sweep's own, and the sky's irradiance within 1e-3 of the frame's brightest
+// (tests/gpu_frame_reuse_test.cpp, tests/view_sky_reuse_test.cpp; docs/accuracy.md).
+inline constexpr double kFrameSunTolerance = 0.05 * std::numbers::pi / 180.0;
 
 // The side of the largest square field renderer.fits_field takes, or nothing when it
 // takes every side up to kMaxFieldSide (bounded by memory alone).

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -72,6 +74,64 @@ TEST(CliSeries, TwentyFourFramesEqualSingleTimeRuns) {
   const std::string single = dir.file("single.png");
   ASSERT_EQ(run_skylit("shade " + kDem + " -q -p shaded --time " + time_of_frame(5) + " -o " + single).status, 0);
   EXPECT_TRUE(same_band(read_output(dir.file("f_05.png")), 0, read_output(single), 0));
+}
+
+// Mean |a − b| of band k of two rasters over the texels valid in both.
+double mean_abs_difference(const OutputRaster& a, int band_a, const OutputRaster& b, int band_b) {
+  const std::size_t n = static_cast<std::size_t>(a.w) * a.h;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < n; ++t) {
+    const double x = a.v[band_a * n + t], y = b.v[band_b * n + t];
+    if (x == a.nodata || y == b.nodata) continue;
+    sum += std::abs(x - y);
+    ++count;
+  }
+  return count ? sum / static_cast<double>(count) : 0.0;
+}
+
+// A replay's frames seconds apart keep the sun's swept far horizon while its heading moves
+// less than --sun-tolerance (0.05° by default): against the dense exact march (--exact)
+// they stay as close as frames swept afresh (within 1.5×, the bound of the viewer's
+// reuse), and --sun-tolerance 0 sweeps every frame, equal to single-time runs.
+TEST(CliSeries, ReplayKeepsTheSunsFarHorizonWithinItsBound) {
+  terrain::testing::ScratchDir dir;
+  const std::string dem = dir.file("scene.tif");  // 47° N: the sun 10° up at 05:00Z
+  ASSERT_EQ(run_skylit("scene --size 128 -o " + dem).status, 0);
+  // 11 frames 4 s apart: the sun's heading moves 0.15° in all.
+  const std::string replay = "shade " + dem + " -p shadow --time 2026-06-21T05:00:00Z/2026-06-21T05:00:40Z/PT4S --timings ";
+  const auto kept = run_skylit(replay + "-o " + dir.file("kept.tif"), true);
+  ASSERT_EQ(kept.status, 0) << kept.out;
+  const auto swept = run_skylit(replay + "--sun-tolerance 0 -o " + dir.file("swept.tif"), true);
+  ASSERT_EQ(swept.status, 0) << swept.out;
+  const auto exact = run_skylit(replay + "--exact -o " + dir.file("exact.tif"), true);
+  ASSERT_EQ(exact.status, 0) << exact.out;
+  const auto frames_kept = [](const std::string& out) {
+    const std::string label = "frames keeping the sun's far";
+    const std::size_t at = out.find(label);
+    return at == std::string::npos ? -1 : std::atoi(out.c_str() + at + label.size());
+  };
+  if (kept.out.find("on gpu") != std::string::npos) {  // CI: llvmpipe at least (SKYLIT_REQUIRE_GPU)
+    EXPECT_GE(frames_kept(kept.out), 6) << kept.out;
+  }
+  EXPECT_EQ(frames_kept(swept.out), 0) << swept.out;
+
+  const OutputRaster k = read_output(dir.file("kept.tif")), s = read_output(dir.file("swept.tif")),
+                     e = read_output(dir.file("exact.tif"));
+  ASSERT_EQ(k.bands, 11);
+  double kept_error = 0.0, swept_error = 0.0;
+  for (int b = 0; b < 11; ++b) {
+    kept_error += mean_abs_difference(k, b, e, b) / 11;
+    swept_error += mean_abs_difference(s, b, e, b) / 11;
+  }
+  std::printf("mean |shadow - exact|: kept %.3g, swept %.3g\n", kept_error, swept_error);
+  EXPECT_LE(kept_error, 1.5 * swept_error) << "kept " << kept_error << ", swept " << swept_error;
+  EXPECT_GT(swept_error, 0.0);  // the sweep is not the exact march: the bound is not vacuous
+  EXPECT_GT(e.mean(10), 0.2);   // and the sun is up on much of the ground
+
+  const std::string single = dir.file("single.tif");
+  ASSERT_EQ(run_skylit("shade " + dem + " -q -p shadow --time 2026-06-21T05:00:28Z -o " + single).status, 0);
+  EXPECT_TRUE(same_band(s, 7, read_output(single), 0));
 }
 
 TEST(CliSeries, SumsOverADayAreTheFramesSums) {

@@ -7,7 +7,6 @@
 #include <glm/mat4x4.hpp>
 
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -46,13 +45,9 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
 // at with no aircraft to follow.
 CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration);
 
-// How far the sun may move before what depends on its position is made again: the swept
-// far slopes of its heading (GpuRenderer::set_sun_heading_tolerance) and the sky model
-// (SkyReuse, view/sky_reuse.h). At 1× replay the sun moves 0.05° in 5–20 s of track time.
-// The shadow's mean error against the exact march stays within 1.5× the sweep's own, and
-// the sky's irradiance within 1e-3 of the frame's brightest (tests/gpu_frame_reuse_test.cpp,
-// tests/view_sky_reuse_test.cpp).
-inline constexpr double kSunTolerance = 0.05 * std::numbers::pi / 180.0;
+// How far the sun may move before the frame's sun slopes (GpuRenderer::
+// set_sun_heading_tolerance) and sky model (SkyReuse, view/sky_reuse.h) are made again.
+inline constexpr double kSunTolerance = shading::kFrameSunTolerance;
 
 struct ViewFrame {
   shading::FrameInputs shading;  // the sun and sky, the aircraft's spheres, exposure

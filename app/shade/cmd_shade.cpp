@@ -36,6 +36,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -77,6 +78,7 @@ struct ShadeArgs {
   bool timings = false;
   LightingArgs light;  // --time, the sun, the sky, --no-sun, --tone
   std::size_t max_frames = shading::kDefaultMaxFrames;
+  double sun_tolerance_deg = shading::kFrameSunTolerance * 180.0 / std::numbers::pi;  // --sun-tolerance
   std::string spheres;  // --spheres FILE.csv
   std::string track;    // --track FILE
   std::string aircraft = "glider";
@@ -268,6 +270,7 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
                                 "; use --backend reference (or auto)");
   renderer.set_field(field);
   renderer.set_options(opt);
+  renderer.set_sun_heading_tolerance(a.sun_tolerance_deg * std::numbers::pi / 180.0);
   run_series(renderer, field, job);
   return 0;
 }
@@ -561,6 +564,12 @@ void add_shade_command(CLI::App& root, Action& run) {
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Most frames a --time series may have")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
+      ->capture_default_str();
+  cmd->add_option("--sun-tolerance", args->sun_tolerance_deg,
+                  "A --time series keeps the sun's swept far horizon while its heading moves less than this many "
+                  "degrees (a replay's frames seconds apart; docs/accuracy.md \"Frame reuse\"); 0 sweeps every frame, "
+                  "as a single time does")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--backend", args->backend,
                   "Compute backend: auto (GPU where an OpenGL 4.5 context exists and the GPU has the product, "

@@ -22,8 +22,9 @@ shading::ResolvedLighting lighting_at(const SeriesJob& job, sky::UtcTime t) {
   return shading::resolve_lighting(r, job.place);
 }
 
-void print_frame_times(const std::vector<double>& ms) {
+void print_frame_times(const std::vector<double>& ms, int sun_far_kept) {
   if (ms.empty()) return;
+  std::fprintf(stderr, "skylit: time %-28s %9d of %zu\n", "frames keeping the sun's far", sun_far_kept, ms.size());
   std::fprintf(stderr, "skylit: time %-28s %9.1f ms\n", "frame 1", ms.front());
   if (ms.size() < 2) return;
   double later = 0.0;
@@ -45,6 +46,7 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
   std::vector<std::string> written;  // removed again if a later frame fails
   shading::ProductBands all;         // the multi-band file
   std::vector<double> frame_ms;
+  int sun_far_kept = 0;  // frames that kept the sun's swept far slopes (Renderer::set_sun_heading_tolerance)
   int night = 0;
   // Frame k's file is written on another thread while frame k + 1 renders: the encoder
   // (PNG: ≈ 80 ms at 1024²) then overlaps the sun pass instead of following it.
@@ -67,6 +69,7 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
         bar.update((k + f) / n);
       });
       frame_ms.push_back(gpu::ms_since(start));
+      if (renderer.last_timings().sun_far_reused) ++sun_far_kept;
       if (sum) {
         sum->add(k, frame);
       } else if (job.outputs.per_frame) {
@@ -99,7 +102,7 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
     for (const std::string& path : written) std::filesystem::remove(path, ec);
     throw;
   }
-  if (job.timings) print_frame_times(frame_ms);
+  if (job.timings) print_frame_times(frame_ms, sun_far_kept);
   if (job.quiet) return;
   std::cerr << "skylit: computed " << frame_ms.size() << " frame" << (frame_ms.size() == 1 ? "" : "s") << " on "
             << renderer.description() << "\n";

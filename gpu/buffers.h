@@ -62,10 +62,12 @@ class Buffer {
   std::size_t mSize = 0;
 };
 
-enum class TextureFormat { R32F, RG32F, RGBA32F };
+// RGBA8: 8-bit unsigned normalised channels, moved as floats in [0, 1] (texture buffers
+// take the 32F formats only).
+enum class TextureFormat { R32F, RG32F, RGBA32F, RGBA8 };
 
-// A single-level 2D float texture (no mipmaps, nearest filtering, clamp to edge).
-// Shaders read it with texelFetch (exact) or bind it as an image.
+// A single-level 2D texture (no mipmaps, nearest filtering unless set_linear_filter(),
+// clamp to edge). Shaders read it with texelFetch (exact) or bind it as an image.
 class Texture2D {
  public:
   Texture2D() = default;
@@ -80,6 +82,8 @@ class Texture2D {
   int width() const { return mWidth; }
   int height() const { return mHeight; }
   int channels() const { return mFormat == TextureFormat::R32F ? 1 : mFormat == TextureFormat::RG32F ? 2 : 4; }
+  // Bilinear filtering for texture() lookups (texelFetch stays exact).
+  void set_linear_filter();
 
   // Whole-texture transfers, row 0 first; size must be width·height·channels.
   void upload(std::span<const float> texels);

@@ -123,6 +123,48 @@ TEST_F(TopDownTest, LitColourShadedWithAnAircraftEqualsTheExportRaster) {
   EXPECT_LT(vs_reference.rms, 2.0);
 }
 
+TEST_F(TopDownTest, NodataIsLeftUndrawnAndTakesNoColourIntoTheGround) {
+  // A 12 × 8 hole of nodata, filled with a cliff the renderer must not show: its texels
+  // keep the clear colour, and every valid texel, the hole's rim included, equals the
+  // export's codes (the colour map gives nodata a valid neighbour's colour).
+  terrain::HeightField f = gpu::testing::synthetic_field();
+  for (int j = 30; j < 38; ++j)
+    for (int i = 20; i < 32; ++i) {
+      f.valid[static_cast<std::size_t>(j) * f.width + i] = 0;
+      f.heights[static_cast<std::size_t>(j) * f.width + i] = 5000.0f;
+    }
+  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+  gpu::GpuRenderer renderer;
+  const shading::FrameInputs inputs;
+  SceneView view(renderer, f, o);
+  OffscreenTarget target(f.width, f.height);
+  target.bind();
+  ViewFrame frame;
+  frame.shading = inputs;
+  frame.camera = ortho_nadir_camera(f, 1.0);
+  frame.style.tone = o.shaded.tone;
+  frame.draw_bodies = false;
+  frame.clear = {1.0, 0.0, 1.0};
+  view.draw(frame, f.width, f.height);
+  const std::vector<std::uint8_t> rgb = target.read_rgb();
+  renderer.set_field(f);
+  const shading::ProductBands codes = renderer.frame(Product::Shaded, inputs);
+  int hole = 0, magenta = 0;
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 0; i < f.width; ++i) {
+      if (f.is_valid(i, j)) continue;
+      ++hole;
+      const std::size_t p = (static_cast<std::size_t>(j) * f.width + i) * 3;
+      magenta += rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
+    }
+  EXPECT_GE(hole, 96);  // the hole, and the scene's own nodata
+  EXPECT_EQ(magenta, hole);
+  const Difference d = compare(rgb, codes);  // valid texels only (the codes are NaN on nodata)
+  EXPECT_GT(d.compared, (f.width * f.height - hole) * 3 - 10);
+  EXPECT_LE(d.max, 1);
+  EXPECT_LT(d.rms, 0.1);
+}
+
 TEST_F(TopDownTest, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   // Flat ground at 0 m, one 40 m sphere 300 m up; sun from azimuth 120°, elevation 35°.
   terrain::HeightField f(160, 160, 10.0);

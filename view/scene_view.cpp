@@ -119,6 +119,10 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   glClearColor(static_cast<float>(frame.clear.r), static_cast<float>(frame.clear.g), static_cast<float>(frame.clear.b), 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  terrain_.draw(shaded, view_proj, frame.camera.eye, frame.camera.pixels_per_radian, frame.style);
+  t.terrain_nodes = terrain_.last_node_count();
+  t.terrain_ms = lap();
+  // After the terrain: the sky, at the far plane, is shaded only where no ground is.
   if (perspective) {
     if (!baked_ || !same_lighting(baked_for_, frame.shading.lighting) || baked_scale_ != shaded.display_scale) {
       baked_ = bake_sky(frame.shading.lighting, shaded.display_scale);
@@ -129,9 +133,6 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
     sky_.draw(view_proj, srgb);
   }
   t.sky_ms = lap();
-  terrain_.draw(shaded, view_proj, frame.camera.eye, frame.camera.pixels_per_radian, frame.style);
-  t.terrain_nodes = terrain_.last_node_count();
-  t.terrain_ms = lap();
   if (frame.draw_bodies && perspective && baked_)
     spheres_.draw(frame.shading.spheres, frame.camera.view, frame.camera.proj, frame.style.exaggeration,
                   sky_.light(), srgb);

@@ -60,8 +60,7 @@ SkyDraw::SkyDraw() : program_("view_sky.vert", "view_sky.frag", display_code_def
 void SkyDraw::set(const SkyMap& map) {
   if (map_.width() != map.azimuths || map_.height() != map.elevations) {
     map_ = gpu::Texture2D(map.azimuths, map.elevations, gpu::TextureFormat::RGBA32F);
-    glTextureParameteri(map_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(map_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    map_.set_linear_filter();
     glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }

@@ -4,6 +4,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <vector>
 
 #include "gpu/gl_context.h"
@@ -12,9 +13,9 @@
 namespace skylit::view {
 namespace {
 
-gpu::GlslDefines terrain_defines() {
-  gpu::GlslDefines d = display_code_defines();
-  d.set("PATCH", kPatchQuads);
+gpu::GlslDefines terrain_defines(const terrain::HeightField& field) {
+  gpu::GlslDefines d;
+  d.set("PATCH", kPatchQuads).set("NODATA", field.any_nodata() ? 1 : 0);
   return d;
 }
 
@@ -36,12 +37,15 @@ std::vector<std::uint32_t> patch_indices() {
 TerrainDraw::TerrainDraw(const terrain::HeightField& field)
     : lod_(field),
       heights_(field.width, field.height, gpu::TextureFormat::R32F),
-      program_("view_terrain.vert", "view_terrain.frag", terrain_defines()),
+      colour_map_(field.width, field.height, gpu::TextureFormat::RGBA8),
+      colour_kernel_(gpu::ComputeProgram::from_embedded("view_terrain_colour.comp", display_code_defines())),
+      program_("view_terrain.vert", "view_terrain.frag", terrain_defines(field)),
       width_(field.width),
       height_(field.height),
       dx_(field.mean_dx()),
       dy_(field.dy) {
   heights_.upload(field.heights);
+  colour_map_.set_linear_filter();
   revision_ = field.revision;
   field_id_ = field.id.value();
   const std::vector<std::uint32_t> idx = patch_indices();
@@ -73,6 +77,16 @@ void TerrainDraw::sync(const terrain::HeightField& field) {
   revision_ = field.revision;
 }
 
+void TerrainDraw::make_colour_map(const gpu::GpuFrame& frame, const TerrainStyle& style) {
+  colour_kernel_.set_uniform("field_size", width_, height_);
+  colour_kernel_.set_uniform("band_count", frame.band_count);
+  colour_kernel_.set_uniform("display_scale", static_cast<float>(frame.display_scale));
+  colour_kernel_.set_uniform("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
+  frame.bands.bind_storage(0);
+  colour_map_.bind_image(0, false, true);
+  colour_kernel_.dispatch_covering(width_, height_);
+}
+
 void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, const glm::dvec3& eye,
                        double pixels_per_radian, const TerrainStyle& style) {
   if (frame.width != width_ || frame.height != height_)
@@ -84,9 +98,17 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   v.max_error_px = style.max_error_px;
   v.exaggeration = style.exaggeration;
   v.curvature = style.curvature && pixels_per_radian > 0.0 ? 0.5 / kEarthRadiusM : 0.0;
-  const std::vector<LodNode> nodes = lod_.select(v);
+  std::vector<LodNode> nodes = lod_.select(v);
   nodes_ = nodes.size();
+  // Nearest first: hidden ground then fails the depth test before it is shaded.
+  const auto distance2 = [&](const LodNode& n) {
+    const double half = 0.5 * kPatchQuads * n.stride;
+    const double x = (n.i0 + half) * dx_ - eye.x, y = -(n.j0 + half) * dy_ - eye.y;
+    return x * x + y * y;
+  };
+  std::sort(nodes.begin(), nodes.end(), [&](const LodNode& a, const LodNode& b) { return distance2(a) < distance2(b); });
 
+  make_colour_map(frame, style);
   const glm::mat4 vp(view_proj);
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));
@@ -95,11 +117,8 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   program_.set("exaggeration", static_cast<float>(style.exaggeration));
   program_.set("curvature", style.curvature && pixels_per_radian > 0.0 ? static_cast<float>(0.5 / kEarthRadiusM) : 0.0f);
   program_.set("eye_xy", static_cast<float>(eye.x), static_cast<float>(eye.y));
-  program_.set("band_count", frame.band_count);
-  program_.set("display_scale", static_cast<float>(frame.display_scale));
-  program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   heights_.bind_sampler(0);
-  frame.bands.bind_storage(0);
+  colour_map_.bind_sampler(1);
   glBindVertexArray(vao_);
   for (const LodNode& n : nodes) {
     program_.set("node_origin", n.i0, n.j0);

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "gpu/buffers.h"
+#include "gpu/compute_program.h"
 #include "gpu/gpu_renderer.h"
 #include "gpu/graphics_program.h"
 #include "shading/products.h"
@@ -42,8 +43,14 @@ class TerrainDraw {
   std::size_t last_node_count() const { return nodes_; }
 
  private:
+  // The frame's 8-bit display codes, one RGBA8 texel per field texel, filtered by the
+  // fragments in one lookup (a fragment reading the float bands did 12 storage loads).
+  void make_colour_map(const gpu::GpuFrame& frame, const TerrainStyle& style);
+
   TerrainLod lod_;
   gpu::Texture2D heights_;
+  gpu::Texture2D colour_map_;
+  gpu::ComputeProgram colour_kernel_;
   gpu::GraphicsProgram program_;
   std::uint32_t vao_ = 0, indices_ = 0;
   int index_count_ = 0;

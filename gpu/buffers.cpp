@@ -18,13 +18,7 @@ void check_range(std::size_t offset, std::size_t bytes, std::size_t size, const 
 }
 
 GLenum internal_format(TextureFormat f) {
-  switch (f) {
-    case TextureFormat::R32F: return GL_R32F;
-    case TextureFormat::RG32F: return GL_RG32F;
-    case TextureFormat::RGBA32F: return GL_RGBA32F;
-    case TextureFormat::RGBA8: return GL_RGBA8;
-  }
-  return GL_R32F;
+  return f == TextureFormat::R32F ? GL_R32F : f == TextureFormat::RG32F ? GL_RG32F : GL_RGBA32F;
 }
 GLenum pixel_format(TextureFormat f) {
   return f == TextureFormat::R32F ? GL_RED : f == TextureFormat::RG32F ? GL_RG : GL_RGBA;
@@ -241,7 +235,6 @@ void TextureArray::bind_image(unsigned unit, bool read, bool write) const {
 }
 
 BufferTexture::BufferTexture(const Buffer& values, TextureFormat format) {
-  if (format == TextureFormat::RGBA8) throw std::invalid_argument("BufferTexture: float formats only");
   check_texture_buffer_size(values.size_bytes() / (sizeof(float) * (format == TextureFormat::R32F ? 1 : 4)),
                             "BufferTexture");
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &mId);

@@ -62,12 +62,10 @@ class Buffer {
   std::size_t mSize = 0;
 };
 
-// RGBA8: 8-bit unsigned normalised channels, moved as floats in [0, 1] (texture buffers
-// take the 32F formats only).
-enum class TextureFormat { R32F, RG32F, RGBA32F, RGBA8 };
+enum class TextureFormat { R32F, RG32F, RGBA32F };
 
-// A single-level 2D texture (no mipmaps, nearest filtering unless set_linear_filter(),
-// clamp to edge). Shaders read it with texelFetch (exact) or bind it as an image.
+// A single-level 2D float texture (no mipmaps, nearest filtering unless
+// set_linear_filter(), clamp to edge). Shaders read it with texelFetch (exact) or bind it as an image.
 class Texture2D {
  public:
   Texture2D() = default;

@@ -14,7 +14,7 @@ namespace skylit::view {
 namespace {
 
 gpu::GlslDefines terrain_defines(const terrain::HeightField& field) {
-  gpu::GlslDefines d;
+  gpu::GlslDefines d = display_code_defines();
   d.set("PATCH", kPatchQuads).set("NODATA", field.any_nodata() ? 1 : 0);
   return d;
 }
@@ -37,8 +37,8 @@ std::vector<std::uint32_t> patch_indices() {
 TerrainDraw::TerrainDraw(const terrain::HeightField& field)
     : lod_(field),
       heights_(field.width, field.height, gpu::TextureFormat::R32F),
-      colour_map_(field.width, field.height, gpu::TextureFormat::RGBA8),
-      colour_kernel_(gpu::ComputeProgram::from_embedded("view_terrain_colour.comp", display_code_defines())),
+      colour_map_(field.width, field.height, gpu::TextureFormat::RGBA32F),
+      colour_kernel_(gpu::ComputeProgram::from_embedded("view_terrain_colour.comp")),
       program_("view_terrain.vert", "view_terrain.frag", terrain_defines(field)),
       width_(field.width),
       height_(field.height),
@@ -77,11 +77,10 @@ void TerrainDraw::sync(const terrain::HeightField& field) {
   revision_ = field.revision;
 }
 
-void TerrainDraw::make_colour_map(const gpu::GpuFrame& frame, const TerrainStyle& style) {
+void TerrainDraw::make_colour_map(const gpu::GpuFrame& frame) {
   colour_kernel_.set_uniform("field_size", width_, height_);
   colour_kernel_.set_uniform("band_count", frame.band_count);
   colour_kernel_.set_uniform("display_scale", static_cast<float>(frame.display_scale));
-  colour_kernel_.set_uniform("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   frame.bands.bind_storage(0);
   colour_map_.bind_image(0, false, true);
   colour_kernel_.dispatch_covering(width_, height_);
@@ -108,7 +107,7 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   };
   std::sort(nodes.begin(), nodes.end(), [&](const LodNode& a, const LodNode& b) { return distance2(a) < distance2(b); });
 
-  make_colour_map(frame, style);
+  make_colour_map(frame);
   const glm::mat4 vp(view_proj);
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));
@@ -117,6 +116,7 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   program_.set("exaggeration", static_cast<float>(style.exaggeration));
   program_.set("curvature", style.curvature && pixels_per_radian > 0.0 ? static_cast<float>(0.5 / kEarthRadiusM) : 0.0f);
   program_.set("eye_xy", static_cast<float>(eye.x), static_cast<float>(eye.y));
+  program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);
   glBindVertexArray(vao_);

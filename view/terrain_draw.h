@@ -43,9 +43,9 @@ class TerrainDraw {
   std::size_t last_node_count() const { return nodes_; }
 
  private:
-  // The frame's 8-bit display codes, one RGBA8 texel per field texel, filtered by the
+  // The frame's display values, one RGBA32F texel per field texel, filtered by the
   // fragments in one lookup (a fragment reading the float bands did 12 storage loads).
-  void make_colour_map(const gpu::GpuFrame& frame, const TerrainStyle& style);
+  void make_colour_map(const gpu::GpuFrame& frame);
 
   TerrainLod lod_;
   gpu::Texture2D heights_;

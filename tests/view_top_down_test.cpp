@@ -41,9 +41,11 @@ shading::ProductOptions options(shading::ToneCurve tone) {
   return o;
 }
 
-// The top-down frame of the field-sized viewport, RGB, top row first.
+// The top-down frame of the field-sized viewport, RGB, top row first, on `clear` where
+// nothing is drawn.
 std::vector<std::uint8_t> top_down(gpu::GpuRenderer& renderer, const terrain::HeightField& f,
-                                   const shading::ProductOptions& o, const shading::FrameInputs& inputs) {
+                                   const shading::ProductOptions& o, const shading::FrameInputs& inputs,
+                                   const glm::dvec3& clear = glm::dvec3(0.0)) {
   SceneView view(renderer, f, o);
   OffscreenTarget target(f.width, f.height);
   target.bind();
@@ -52,6 +54,7 @@ std::vector<std::uint8_t> top_down(gpu::GpuRenderer& renderer, const terrain::He
   frame.camera = ortho_nadir_camera(f, 1.0);
   frame.style.tone = o.shaded.tone;
   frame.draw_bodies = false;
+  frame.clear = clear;
   view.draw(frame, f.width, f.height);
   return target.read_rgb();
 }
@@ -136,17 +139,7 @@ TEST_F(TopDownTest, NodataIsLeftUndrawnAndTakesNoColourIntoTheGround) {
   const shading::ProductOptions o = options(shading::ToneCurve::Linear);
   gpu::GpuRenderer renderer;
   const shading::FrameInputs inputs;
-  SceneView view(renderer, f, o);
-  OffscreenTarget target(f.width, f.height);
-  target.bind();
-  ViewFrame frame;
-  frame.shading = inputs;
-  frame.camera = ortho_nadir_camera(f, 1.0);
-  frame.style.tone = o.shaded.tone;
-  frame.draw_bodies = false;
-  frame.clear = {1.0, 0.0, 1.0};
-  view.draw(frame, f.width, f.height);
-  const std::vector<std::uint8_t> rgb = target.read_rgb();
+  const std::vector<std::uint8_t> rgb = top_down(renderer, f, o, inputs, {1.0, 0.0, 1.0});
   renderer.set_field(f);
   const shading::ProductBands codes = renderer.frame(Product::Shaded, inputs);
   int hole = 0, magenta = 0;

@@ -4,6 +4,7 @@
 // nodes of different strides show no cracks. Vertices read the heights from a texture
 // (no vertex buffer): gl_VertexID = b * (PATCH + 3) + a over the patch with its ring.
 // Needs PATCH (view/terrain_draw.cpp).
+#include "curvature_drop.glsl"
 
 layout(binding = 0) uniform sampler2D heights;  // r32f, texel (i, j) at (i, j)
 uniform ivec2 field_size;
@@ -12,8 +13,6 @@ uniform ivec2 node_origin;  // texel of the patch's first vertex
 uniform int node_stride;    // texels between vertices
 uniform float skirt_m;      // how far the ring hangs below the edge
 uniform float exaggeration;
-uniform float curvature;    // 1 / (2 R), or 0: the ground falls away as d^2 / (2 R)
-uniform vec2 eye_xy;
 uniform mat4 view_proj;
 
 out vec2 texel;  // field texel coordinates (i, j), interpolated for the product lookup
@@ -30,8 +29,7 @@ void main() {
                    ij.y == 0 ? -0.5 : (ij.y == field_size.y - 1 ? 0.5 : 0.0));
   vec2 t = vec2(ij) + edge;
   vec2 xy = t * vec2(spacing.x, -spacing.y);
-  vec2 d = xy - eye_xy;
-  float z = h * exaggeration - curvature * dot(d, d) - (ring ? skirt_m : 0.0);
+  float z = h * exaggeration - curvatureDrop(xy) - (ring ? skirt_m : 0.0);
   texel = t;
   gl_Position = view_proj * vec4(xy, z, 1.0);
 }

@@ -2,8 +2,10 @@
 // Flight trails (view/trail_draw.cpp), each segment a screen-aligned quad `width_px`
 // wide (core profile lines are 1 pixel): two triangles, six vertices per segment, pulled
 // from a storage buffer by gl_VertexID. Segment g joins vertices g and g + 1; the draw
-// counts only segments inside a polyline. z is exaggerated like the aircraft's. Needs
-// TRAIL_BINDING.
+// counts only segments inside a polyline. z is exaggerated like the aircraft's and falls
+// with the ground under it (curvature_drop.glsl). Needs TRAIL_BINDING.
+#include "curvature_drop.glsl"
+
 struct TrailVertex {
   vec4 position_time;  // field frame x, y, z (m, not exaggerated); seconds after the trail's first fix
   vec4 colour;         // sRGB display value, alpha 1
@@ -17,7 +19,10 @@ uniform vec2 viewport;  // pixels
 out float time_s;
 out vec3 display;
 
-vec4 clip_of(TrailVertex v) { return view_proj * vec4(v.position_time.xy, v.position_time.z * exaggeration, 1.0); }
+vec4 clip_of(TrailVertex v) {
+  vec2 xy = v.position_time.xy;
+  return view_proj * vec4(xy, v.position_time.z * exaggeration - curvatureDrop(xy), 1.0);
+}
 
 void main() {
   int g = gl_VertexID / 6, corner = gl_VertexID % 6;

@@ -245,5 +245,53 @@ TEST_F(TopDownTest, AircraftIsDrawnWherePerspectivePutsIt) {
   }
 }
 
+TEST_F(TopDownTest, AFarAircraftFallsWithTheCurvedGround) {
+  // The ground is drawn d^2 / (2R) lower at distance d from the eye; an aircraft 25 km
+  // ahead at the eye's height falls with it, 49 m: ppr · 49 / 25000 ≈ 2.2 px below the
+  // screen's centre at 1024 px, and on the centre with the curvature off.
+  terrain::HeightField f(160, 160, 200.0);  // flat, 32 km square
+  const double ahead = 25000.0, r = 150.0;
+  const glm::dvec3 eye{16000.0, -31000.0, 1000.0}, centre{16000.0, -31000.0 + ahead, 1000.0};
+  const int size = 1024;
+  shading::FrameInputs without;
+  without.lighting = lighting_at(180.0, 35.0, "uniform");
+  shading::FrameInputs with = without;
+  with.spheres = {{centre, r}};
+  gpu::GpuRenderer renderer;
+  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+  SceneView view(renderer, f, o);
+  OffscreenTarget target(size, size);
+  const double ppr = size / (2.0 * std::tan(25.0 * std::numbers::pi / 180.0));
+  for (const bool curvature : {true, false}) {
+    auto draw = [&](const shading::FrameInputs& inputs) {
+      target.bind();
+      ViewFrame frame;
+      frame.shading = inputs;
+      frame.camera = perspective_camera({eye, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}, f, size, size, 1.0, inputs.spheres);
+      frame.style.tone = o.shaded.tone;
+      frame.style.curvature = curvature;
+      view.draw(frame, size, size);
+      return target.read_rgb();
+    };
+    const auto bare = draw(without), drawn = draw(with);
+    double n = 0.0, sx = 0.0, sy = 0.0;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const double dx = x + 0.5 - 0.5 * size, dy = y + 0.5 - 0.5 * size;  // y down (top row first)
+        if (std::abs(dx) > 20.0 || std::abs(dy) > 20.0) continue;  // the shadow is 40 px below
+        const std::size_t p = (static_cast<std::size_t>(y) * size + x) * 3;
+        if (bare[p] == drawn[p] && bare[p + 1] == drawn[p + 1] && bare[p + 2] == drawn[p + 2]) continue;
+        n += 1.0;
+        sx += dx;
+        sy += dy;
+      }
+    const double want_px = curvature ? ppr * (ahead * ahead * 0.5 / kEarthRadiusM) / ahead : 0.0;
+    const double radius_px = ppr * r / ahead;
+    ASSERT_GT(n, 0.8 * std::numbers::pi * radius_px * radius_px) << "curvature " << curvature;
+    EXPECT_NEAR(sx / n, 0.0, 0.3) << "curvature " << curvature;
+    EXPECT_NEAR(sy / n, want_px, 0.3) << "curvature " << curvature;
+  }
+}
+
 }  // namespace
 }  // namespace skylit::view

@@ -144,7 +144,7 @@ Projected project(const glm::dvec3& p) {
 using Image = std::vector<std::uint8_t>;
 
 Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double clear_depth = 1.0,
-           double width_px = kTrailWidthPx) {
+           double width_px = kTrailWidthPx, const CurvatureDrop& drop = {}) {
   OffscreenTarget target(kSize, kSize);
   target.bind();
   glEnable(GL_DEPTH_TEST);
@@ -153,7 +153,7 @@ Image draw(std::span<const TrailPolyline> trail, double drawn_until_s, double cl
   glClearDepth(clear_depth);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   TrailDraw trails(trail);
-  trails.draw(test_view_proj(), kExaggeration, drawn_until_s, width_px);
+  trails.draw(test_view_proj(), kExaggeration, drop, drawn_until_s, width_px);
   glFinish();
   return target.read_rgb();
 }
@@ -189,6 +189,29 @@ std::vector<flight::PlacedFix> track_b() {
   std::vector<flight::PlacedFix> f;
   for (int t = 0; t < 80; ++t) f.push_back({double(t), {40.0, 3.0 * t, 50.0}});
   return f;
+}
+
+TEST_F(TrailDrawTest, FallsWithTheCurvedGround) {
+  // A level track at 50 m (100 m exaggerated) across the view, x = −100 … 100 at y = 200,
+  // under a drop of d^2 / 500 m from the eye's (0, 0): drawn where z · exaggeration − drop
+  // projects, 80 to 100 m lower, and not where the undropped track would be.
+  std::vector<flight::PlacedFix> fixes;
+  for (int t = 0; t <= 20; ++t) fixes.push_back({double(t), {-100.0 + 10.0 * t, 200.0, 50.0}});
+  const std::vector<TrailPolyline> trail = trail_polylines(fixes, same, TrailColour::Altitude);
+  const CurvatureDrop drop{1.0 / 500.0, {0.0, 0.0}};
+  const Image img = draw(trail, 1e12, 1.0, kTrailWidthPx, drop);
+  int checked = 0;
+  for (const flight::PlacedFix& f : fixes) {
+    const glm::dvec3 p = f.position;
+    const Projected fallen = project({p.x, p.y, p.z - drop.at(p.x, p.y) / kExaggeration});
+    const Projected level = project(p);
+    if (!inside(fallen.pixel) || !inside(level.pixel)) continue;
+    if (glm::distance(fallen.pixel, level.pixel) < 4.0) continue;  // near the eye: too little to tell
+    EXPECT_TRUE(drawn_near(img, fallen.pixel, 1)) << "x = " << p.x;
+    EXPECT_FALSE(drawn_near(img, level.pixel, 1)) << "x = " << p.x;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
 }
 
 TEST_F(TrailDrawTest, TwoTracksDrawnWhereTheCameraPutsThemWithTheGapLeftOpen) {

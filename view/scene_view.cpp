@@ -46,6 +46,10 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration) {
   };
 }
 
+CurvatureDrop drawn_drop(const ViewFrame& frame) {
+  return curvature_drop(frame.style.curvature, frame.camera.eye, frame.camera.pixels_per_radian);
+}
+
 CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration) {
   const double x = 0.5 * (field.width - 1) * field.mean_dx(), y = -0.5 * (field.height - 1) * field.dy;
   return {{x, y, ground_of(field, exaggeration)(x, y)}, 0.0};
@@ -135,7 +139,7 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   t.sky_ms = lap();
   if (frame.draw_bodies && perspective && baked_)
     spheres_.draw(frame.shading.spheres, frame.camera.view, frame.camera.proj, frame.style.exaggeration,
-                  sky_.light(), srgb);
+                  drawn_drop(frame), sky_.light(), srgb);
   t.bodies_ms = lap();
   t.total_ms = gpu::ms_since(start);
   return t;

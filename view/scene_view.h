@@ -59,6 +59,10 @@ struct ViewFrame {
   bool reuse_shading = false;
 };
 
+// How far the frame's ground falls from its eye (Earth's curvature): what is drawn over
+// the ground falls by the same.
+CurvatureDrop drawn_drop(const ViewFrame& frame);
+
 // Where a frame's time went (wall clock, ms; with `measure`, each pass is finished
 // before the next starts).
 struct ViewTimings {

@@ -17,7 +17,7 @@ SphereDraw::SphereDraw() : program_("view_spheres.vert", "view_spheres.frag", di
 }
 
 void SphereDraw::draw(std::span<const blockers::Sphere> spheres, const glm::dmat4& view, const glm::dmat4& proj,
-                      double exaggeration, const SkyLight& light, bool srgb) {
+                      double exaggeration, const CurvatureDrop& drop, const SkyLight& light, bool srgb) {
   if (spheres.empty()) return;
   std::vector<float> packed;
   packed.reserve(spheres.size() * 4);
@@ -35,6 +35,7 @@ void SphereDraw::draw(std::span<const blockers::Sphere> spheres, const glm::dmat
   program_.set_mat4("proj", glm::value_ptr(p));
   program_.set_mat3("view_to_world", glm::value_ptr(to_world));
   program_.set("exaggeration", static_cast<float>(exaggeration));
+  set_curvature_uniforms(program_, drop);
   const glm::vec3 s(light.sun_direction), sun(light.sun_up ? light.sun_on_facing : glm::dvec3(0.0)),
       sky(light.sky_on_horizontal);
   program_.set("sun_dir", s.x, s.y, s.z);

@@ -9,6 +9,7 @@
 #include "gpu/buffers.h"
 #include "gpu/graphics_program.h"
 #include "shading/blockers/sphere_blocker.h"
+#include "view/curvature_drop.h"
 #include "view/sky_draw.h"
 
 namespace skylit::view {
@@ -20,7 +21,7 @@ class SphereDraw {
  public:
   SphereDraw();
   void draw(std::span<const blockers::Sphere> spheres, const glm::dmat4& view, const glm::dmat4& proj,
-            double exaggeration, const SkyLight& light, bool srgb);
+            double exaggeration, const CurvatureDrop& drop, const SkyLight& light, bool srgb);
 
  private:
   gpu::GraphicsProgram program_;

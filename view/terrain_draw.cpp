@@ -96,7 +96,8 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   v.pixels_per_radian = pixels_per_radian;
   v.max_error_px = style.max_error_px;
   v.exaggeration = style.exaggeration;
-  v.curvature = style.curvature && pixels_per_radian > 0.0 ? 0.5 / kEarthRadiusM : 0.0;
+  const CurvatureDrop drop = curvature_drop(style.curvature, eye, pixels_per_radian);
+  v.curvature = drop.per_m2;
   std::vector<LodNode> nodes = lod_.select(v);
   nodes_ = nodes.size();
   // Nearest first: hidden ground then fails the depth test before it is shaded.
@@ -114,8 +115,7 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   program_.set("field_size", width_, height_);
   program_.set("spacing", static_cast<float>(dx_), static_cast<float>(dy_));
   program_.set("exaggeration", static_cast<float>(style.exaggeration));
-  program_.set("curvature", style.curvature && pixels_per_radian > 0.0 ? static_cast<float>(0.5 / kEarthRadiusM) : 0.0f);
-  program_.set("eye_xy", static_cast<float>(eye.x), static_cast<float>(eye.y));
+  set_curvature_uniforms(program_, drop);
   program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);

@@ -13,12 +13,10 @@
 #include "gpu/graphics_program.h"
 #include "shading/products.h"
 #include "terrain/height_field.h"
+#include "view/curvature_drop.h"
 #include "view/terrain_lod.h"
 
 namespace skylit::view {
-
-// Earth's mean radius: the ground falls away from the eye by d² / (2R).
-inline constexpr double kEarthRadiusM = 6371008.8;
 
 struct TerrainStyle {
   double exaggeration = 1.0;

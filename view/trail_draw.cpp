@@ -49,7 +49,8 @@ TrailDraw::TrailDraw(std::span<const TrailPolyline> polylines)
 
 TrailDraw::~TrailDraw() { glDeleteVertexArrays(1, &vao_); }
 
-void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s, double width_px) {
+void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, const CurvatureDrop& drop, double drawn_until_s,
+                     double width_px) {
   if (firsts_.empty()) return;
   // Up to the first vertex after the cut (the fragment stage drops that segment's rest):
   // its segments, the k-th from vertex first + k.
@@ -65,6 +66,7 @@ void TrailDraw::draw(const glm::dmat4& view_proj, double exaggeration, double dr
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));
   program_.set("exaggeration", static_cast<float>(exaggeration));
+  set_curvature_uniforms(program_, drop);
   program_.set("drawn_until", static_cast<float>(drawn_until_s - time_origin_));
   program_.set("width_px", static_cast<float>(width_px));
   program_.set("viewport", static_cast<float>(viewport[2]), static_cast<float>(viewport[3]));

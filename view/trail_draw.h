@@ -11,6 +11,7 @@
 
 #include "gpu/buffers.h"
 #include "gpu/graphics_program.h"
+#include "view/curvature_drop.h"
 #include "view/trail_polyline.h"
 
 namespace skylit::view {
@@ -27,9 +28,10 @@ class TrailDraw {
   TrailDraw& operator=(const TrailDraw&) = delete;
 
   // Every polyline up to drawn_until_s (UTC), its last segment cut at that instant,
-  // width_px pixels wide; z scaled by the exaggeration as the terrain and the aircraft
-  // are (like the aircraft, without the terrain's curvature drop).
-  void draw(const glm::dmat4& view_proj, double exaggeration, double drawn_until_s, double width_px = kTrailWidthPx);
+  // width_px pixels wide; z scaled by the exaggeration and lowered by the curvature drop
+  // as the terrain and the aircraft are.
+  void draw(const glm::dmat4& view_proj, double exaggeration, const CurvatureDrop& drop, double drawn_until_s,
+            double width_px = kTrailWidthPx);
 
  private:
   gpu::GraphicsProgram program_;

@@ -290,7 +290,7 @@ void Viewer::apply_panel() {
 }
 
 // The ground point under the cursor: a ray through the pixel, marched against the
-// exaggerated ground (none when it meets no ground).
+// exaggerated ground as drawn, fallen with the curvature (none when it meets no ground).
 std::optional<glm::dvec3> Viewer::ground_under_cursor() const {
   int w = 0, h = 0;
   window_.framebuffer_size(w, h);
@@ -299,12 +299,13 @@ std::optional<glm::dvec3> Viewer::ground_under_cursor() const {
   const glm::dvec4 a = inv * glm::dvec4(nx, ny, -1.0, 1.0), b = inv * glm::dvec4(nx, ny, 1.0, 1.0);
   const glm::dvec3 from = glm::dvec3(a) / a.w, to = glm::dvec3(b) / b.w;
   const sv::GroundHeight ground = sv::ground_of(field_, exaggeration_);
+  const sv::CurvatureDrop drop = sv::drawn_drop(last_frame_);
   const double step = 0.5 * std::min(field_.mean_dx(), field_.dy);
   const double length = glm::distance(from, to);
   const glm::dvec3 dir = (to - from) / length;
   for (double s = 0.0; s < length; s += step) {
     const glm::dvec3 p = from + s * dir;
-    if (p.z <= ground(p.x, p.y)) return p;
+    if (p.z <= ground(p.x, p.y) - drop.at(p.x, p.y)) return p;
   }
   return std::nullopt;
 }
@@ -469,7 +470,7 @@ int Viewer::run() {
       last_frame_ = frame;
       log_camera(k, frame, w, h);
       build_trails();
-      if (trails_) trails_->draw(frame.camera.proj * frame.camera.view, exaggeration_, timeline_->time());
+      if (trails_) trails_->draw(frame.camera.proj * frame.camera.view, exaggeration_, sv::drawn_drop(frame), timeline_->time());
 
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();

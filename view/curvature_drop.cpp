@@ -1,0 +1,17 @@
+#include "view/curvature_drop.h"
+
+namespace skylit::view {
+
+CurvatureDrop curvature_drop(bool curvature, const glm::dvec3& eye, double pixels_per_radian) {
+  CurvatureDrop d;
+  d.per_m2 = curvature && pixels_per_radian > 0.0 ? 0.5 / kEarthRadiusM : 0.0;
+  d.eye_xy = {eye.x, eye.y};
+  return d;
+}
+
+void set_curvature_uniforms(const gpu::GraphicsProgram& program, const CurvatureDrop& drop) {
+  program.set("curvature", static_cast<float>(drop.per_m2));
+  program.set("eye_xy", static_cast<float>(drop.eye_xy.x), static_cast<float>(drop.eye_xy.y));
+}
+
+}  // namespace skylit::view

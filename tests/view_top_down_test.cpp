@@ -193,6 +193,37 @@ TEST_F(TopDownTest, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   EXPECT_NEAR(sy / weight, want_y, 15.0);
 }
 
+// Frames seen from `eye` looking north over `f`, the sun behind the eye under a uniform
+// sky, without and with a sphere at `centre` (RGB, top row first).
+struct WithoutAndWith {
+  std::vector<std::uint8_t> without, with;
+};
+WithoutAndWith looking_north(const terrain::HeightField& f, const glm::dvec3& eye, const blockers::Sphere& sphere,
+                             int size, bool curvature = true) {
+  shading::FrameInputs without;
+  without.lighting = lighting_at(180.0, 35.0, "uniform");
+  shading::FrameInputs with = without;
+  with.spheres = {sphere};
+  gpu::GpuRenderer renderer;
+  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
+  SceneView view(renderer, f, o);
+  OffscreenTarget target(size, size);
+  auto draw = [&](const shading::FrameInputs& inputs) {
+    target.bind();
+    ViewFrame frame;
+    frame.shading = inputs;
+    frame.camera = perspective_camera({eye, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}, f, size, size, 1.0, inputs.spheres);
+    frame.style.tone = o.shaded.tone;
+    frame.style.curvature = curvature;
+    view.draw(frame, size, size);
+    return target.read_rgb();
+  };
+  WithoutAndWith out;
+  out.without = draw(without);
+  out.with = draw(with);
+  return out;
+}
+
 TEST_F(TopDownTest, AircraftIsDrawnWherePerspectivePutsIt) {
   // Flat ground at 0 m; the eye looking north at a 20 m sphere ahead at the eye's height,
   // the sun behind the eye: on screen a disc at the centre whose radius is
@@ -203,24 +234,7 @@ TEST_F(TopDownTest, AircraftIsDrawnWherePerspectivePutsIt) {
     const glm::dvec3 eye{800.0, -1300.0, height}, centre{800.0, -1300.0 + ahead, height};
     const double r = 20.0;
     const int size = 256;
-    shading::FrameInputs without;
-    without.lighting = lighting_at(180.0, 35.0, "uniform");
-    shading::FrameInputs with = without;
-    with.spheres = {{centre, r}};
-    gpu::GpuRenderer renderer;
-    const shading::ProductOptions o = options(shading::ToneCurve::Linear);
-    SceneView view(renderer, f, o);
-    OffscreenTarget target(size, size);
-    auto draw = [&](const shading::FrameInputs& inputs) {
-      target.bind();
-      ViewFrame frame;
-      frame.shading = inputs;
-      frame.camera = perspective_camera({eye, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}, f, size, size, 1.0, inputs.spheres);
-      frame.style.tone = o.shaded.tone;
-      view.draw(frame, size, size);
-      return target.read_rgb();
-    };
-    const auto bare = draw(without), drawn = draw(with);
+    const auto [bare, drawn] = looking_north(f, eye, {centre, r}, size);
     const double ppr = size / (2.0 * std::tan(25.0 * std::numbers::pi / 180.0));
     const double radius_px = ppr * std::tan(std::asin(r / glm::distance(eye, centre)));
     int inside = 0, inside_changed = 0, outside_changed = 0;
@@ -253,27 +267,9 @@ TEST_F(TopDownTest, AFarAircraftFallsWithTheCurvedGround) {
   const double ahead = 25000.0, r = 150.0;
   const glm::dvec3 eye{16000.0, -31000.0, 1000.0}, centre{16000.0, -31000.0 + ahead, 1000.0};
   const int size = 1024;
-  shading::FrameInputs without;
-  without.lighting = lighting_at(180.0, 35.0, "uniform");
-  shading::FrameInputs with = without;
-  with.spheres = {{centre, r}};
-  gpu::GpuRenderer renderer;
-  const shading::ProductOptions o = options(shading::ToneCurve::Linear);
-  SceneView view(renderer, f, o);
-  OffscreenTarget target(size, size);
   const double ppr = size / (2.0 * std::tan(25.0 * std::numbers::pi / 180.0));
   for (const bool curvature : {true, false}) {
-    auto draw = [&](const shading::FrameInputs& inputs) {
-      target.bind();
-      ViewFrame frame;
-      frame.shading = inputs;
-      frame.camera = perspective_camera({eye, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}, f, size, size, 1.0, inputs.spheres);
-      frame.style.tone = o.shaded.tone;
-      frame.style.curvature = curvature;
-      view.draw(frame, size, size);
-      return target.read_rgb();
-    };
-    const auto bare = draw(without), drawn = draw(with);
+    const auto [bare, drawn] = looking_north(f, eye, {centre, r}, size, curvature);
     double n = 0.0, sx = 0.0, sy = 0.0;
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {

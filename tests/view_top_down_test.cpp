@@ -281,7 +281,8 @@ TEST_F(TopDownTest, AFarAircraftFallsWithTheCurvedGround) {
         sx += dx;
         sy += dy;
       }
-    const double want_px = curvature ? ppr * (ahead * ahead * 0.5 / kEarthRadiusM) / ahead : 0.0;
+    const double earth_radius_m = 6371000.0;
+    const double want_px = curvature ? ppr * (ahead * ahead * 0.5 / earth_radius_m) / ahead : 0.0;
     const double radius_px = ppr * r / ahead;
     ASSERT_GT(n, 0.8 * std::numbers::pi * radius_px * radius_px) << "curvature " << curvature;
     EXPECT_NEAR(sx / n, 0.0, 0.3) << "curvature " << curvature;

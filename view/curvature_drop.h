@@ -1,7 +1,8 @@
 // Earth's curvature at range, as the viewer draws it: the ground falls away from the eye
 // by d² / (2R), d the horizontal distance from the eye. Whatever is drawn over the ground
 // (the aircraft, their trails, the brush's pick ray) falls by the same, or it floats
-// above the ground it shades (31 m at 20 km, 196 m at 50 km). GLSL twin:
+// above the ground it shades (31 m at 20 km, 196 m at 50 km). The drop is the horizon
+// march's (horizon::EarthCurvature) without refraction. GLSL twin:
 // shaders/curvature_drop.glsl.
 #pragma once
 
@@ -12,11 +13,8 @@
 
 namespace skylit::view {
 
-// Earth's mean radius.
-inline constexpr double kEarthRadiusM = 6371008.8;
-
 struct CurvatureDrop {
-  double per_m2 = 0.0;  // 1 / (2R), or 0: no drop
+  double per_m2 = 0.0;  // 1 / (2R) (horizon::EarthCurvature, no refraction), or 0: no drop
   glm::dvec2 eye_xy{0.0};
 
   // The drop (m) at field-frame (x, y).

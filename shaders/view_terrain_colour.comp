@@ -29,10 +29,11 @@ void main() {
   if (!valid(v)) {
     alpha = 0.0;
     v = vec3(0.0);
-    for (int k = 0; k < 8; ++k) {  // the 4 edge neighbours first, then the corners
-      ivec2 d = k < 4 ? ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0)
-                      : ivec2(k % 2 == 0 ? 1 : -1, k < 6 ? 1 : -1);
-      ivec2 n = ij + d;
+    // The 4 edge neighbours first, then the corners.
+    const ivec2 neighbours[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1), ivec2(1, 1),
+                                         ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
+    for (int k = 0; k < 8; ++k) {
+      ivec2 n = ij + neighbours[k];
       if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, field_size))) continue;
       vec3 w = linear_at(n);
       if (valid(w)) {

@@ -104,6 +104,7 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   if (!frame.reuse_shading || !shaded_) {
     shaded_.reset();
     shaded_.emplace(renderer_.frame_on_gpu(shading::Product::Shaded, frame.shading));
+    terrain_.set_colour(*shaded_);
   }
   const gpu::GpuFrame& shaded = *shaded_;
   t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
@@ -123,7 +124,7 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   glClearColor(static_cast<float>(frame.clear.r), static_cast<float>(frame.clear.g), static_cast<float>(frame.clear.b), 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  terrain_.draw(shaded, view_proj, frame.camera.eye, frame.camera.pixels_per_radian, frame.style);
+  terrain_.draw(view_proj, frame.camera.eye, frame.camera.pixels_per_radian, frame.style);
   t.terrain_nodes = terrain_.last_node_count();
   t.terrain_ms = lap();
   // After the terrain: the sky, at the far plane, is shaded only where no ground is.

@@ -77,7 +77,9 @@ void TerrainDraw::sync(const terrain::HeightField& field) {
   revision_ = field.revision;
 }
 
-void TerrainDraw::make_colour_map(const gpu::GpuFrame& frame) {
+void TerrainDraw::set_colour(const gpu::GpuFrame& frame) {
+  if (frame.width != width_ || frame.height != height_)
+    throw std::invalid_argument("TerrainDraw: the frame is not of this field");
   colour_kernel_.set_uniform("field_size", width_, height_);
   colour_kernel_.set_uniform("band_count", frame.band_count);
   colour_kernel_.set_uniform("display_scale", static_cast<float>(frame.display_scale));
@@ -86,10 +88,8 @@ void TerrainDraw::make_colour_map(const gpu::GpuFrame& frame) {
   colour_kernel_.dispatch_covering(width_, height_);
 }
 
-void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, const glm::dvec3& eye,
-                       double pixels_per_radian, const TerrainStyle& style) {
-  if (frame.width != width_ || frame.height != height_)
-    throw std::invalid_argument("TerrainDraw: the frame is not of this field");
+void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian,
+                       const TerrainStyle& style) {
   LodView v;
   v.view_proj = view_proj;
   v.eye = eye;
@@ -108,7 +108,6 @@ void TerrainDraw::draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, 
   };
   std::sort(nodes.begin(), nodes.end(), [&](const LodNode& a, const LodNode& b) { return distance2(a) < distance2(b); });
 
-  make_colour_map(frame);
   const glm::mat4 vp(view_proj);
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));

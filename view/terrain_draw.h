@@ -35,15 +35,16 @@ class TerrainDraw {
   // Re-uploads the rows the field's last edit changed (a no-op when the field's revision
   // is the one drawn).
   void sync(const terrain::HeightField& field);
-  // pixels_per_radian 0: orthographic (every node at full resolution).
-  void draw(const gpu::GpuFrame& frame, const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian,
-            const TerrainStyle& style);
+  // The colour of the draws that follow: the frame's display values, one RGBA32F texel
+  // per field texel, filtered by the fragments in one lookup (a fragment reading the float
+  // bands did 12 storage loads). Once per shading frame: the tiles of a screenshot redraw
+  // the same colour.
+  void set_colour(const gpu::GpuFrame& frame);
+  // pixels_per_radian 0: orthographic (every node at full resolution). Needs set_colour().
+  void draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian, const TerrainStyle& style);
   std::size_t last_node_count() const { return nodes_; }
 
  private:
-  // The frame's display values, one RGBA32F texel per field texel, filtered by the
-  // fragments in one lookup (a fragment reading the float bands did 12 storage loads).
-  void make_colour_map(const gpu::GpuFrame& frame);
 
   TerrainLod lod_;
   gpu::Texture2D heights_;

@@ -108,18 +108,23 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
   const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres);
   const blockers::SphereGroups groups = blockers::group_spheres(spheres);
   const blockers::SphereBins bins = shading::frame_bins(field, spheres, groups, blocking, options);
-  // Per group two texels: (centre, bound) and (area, first, count, 0); the member order.
+  // Per tree node two texels: (centre, bound) and (area, first, count, next); the member
+  // order. The sky bins list each group's root node.
+  if (groups.nodes.size() >= (std::size_t{1} << 24))
+    throw std::runtime_error("GPU sphere blockers: over 2^24 sphere tree nodes in one frame");
   std::vector<float> packed_groups, packed_spheres;
-  for (const blockers::SphereGroup& g : groups.groups)
+  for (const blockers::SphereGroup& g : groups.nodes)
     for (double v : {g.centre.x, g.centre.y, g.centre.z, g.bound, g.area, static_cast<double>(g.first),
-                     static_cast<double>(g.count), 0.0})
+                     static_cast<double>(g.count), static_cast<double>(g.next)})
       packed_groups.push_back(static_cast<float>(v));
+  blockers::SphereBins::Flat sky = bins.flat_sky();
+  for (std::uint32_t& g : sky.indices) g = groups.roots[g];
   for (const blockers::Sphere& s : spheres)
     for (double v : {s.centre.x, s.centre.y, s.centre.z, s.radius}) packed_spheres.push_back(static_cast<float>(v));
   const std::size_t bytes = view(spheres_, spheres_tex_, packed_spheres, TextureFormat::RGBA32F) +
                             view(groups_, groups_tex_, packed_groups, TextureFormat::RGBA32F) +
                             view(order_, order_tex_, {groups.order.begin(), groups.order.end()}, TextureFormat::R32F) +
-                            view(sky_bins_, sky_bins_tex_, packed(bins.flat_sky()), TextureFormat::R32F) +
+                            view(sky_bins_, sky_bins_tex_, packed(sky), TextureFormat::R32F) +
                             view(sun_bins_, sun_bins_tex_, packed(bins.flat_sun()), TextureFormat::R32F);
   tiles_x_ = bins.tiles_x();
   tiles_ = bins.tiles_x() * bins.tiles_y();

@@ -188,15 +188,16 @@ bool addCap(vec4 s, vec4 extent, vec3 p, vec3 n, int i, int j, vec2 highest, ino
   return true;
 }
 
-// blockers::SphereGroup g: (centre, bound) and (area, first, count, 0); its members'
-// sphere indices in order_tex.
+// Node g of the groups' sphere trees (blockers::SphereGroups::nodes): (centre, bound) and
+// (area, first, count, next); the members' sphere indices in order_tex.
 layout(binding = GROUPS_UNIT) uniform samplerBuffer groups_tex;
 layout(binding = ORDER_UNIT) uniform samplerBuffer order_tex;
 
-// f_S: the summed log*-visibility of the sky bin's groups (one cap each where the
-// texel sees the group within asin(MERGE_SIN), else its members) that survive the
-// culls; returns how many caps did. highest_slope: the tangent of the texel's highest
-// visibility horizon. Twin of blockers::block_sky.
+// f_S: the summed log*-visibility of the sky bin's groups (the sky bins list their root
+// nodes; per group the caps of blockers::for_each_cap: a node the texel sees within
+// asin(MERGE_SIN) is one cap, else its children, down to single spheres) that survive
+// the culls; returns how many caps did. highest_slope: the tangent of the texel's
+// highest visibility horizon. Twin of blockers::block_sky.
 int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[SH_COEFFS]) {
   vec2 highest = horizonSinCos(highest_slope);
   for (int r = 0; r < SH_COEFFS; ++r) f[r] = 0.0;
@@ -206,16 +207,20 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[S
   vec3 p = texelPosition(i, j);
   int kept = 0;
   for (uint q = first; q < last; ++q) {
-    int g = int(binEntry(sky_bins_tex, q));
-    vec4 bound = texelFetch(groups_tex, 2 * g), shape = texelFetch(groups_tex, 2 * g + 1);
-    if (bound.w <= MERGE_SIN * length(bound.xyz - p)) {
-      kept += addCap(vec4(bound.xyz, sqrt(shape.x)), bound, p, n, i, j, highest, f) ? 1 : 0;
-      continue;
-    }
-    int m0 = int(shape.y), m1 = m0 + int(shape.z);
-    for (int m = m0; m < m1; ++m) {
-      vec4 s = sphereAt(uint(texelFetch(order_tex, m).r));
-      kept += addCap(s, s, p, n, i, j, highest, f) ? 1 : 0;
+    int node = int(binEntry(sky_bins_tex, q));
+    int end = int(texelFetch(groups_tex, 2 * node + 1).w);
+    while (node < end) {
+      vec4 bound = texelFetch(groups_tex, 2 * node), shape = texelFetch(groups_tex, 2 * node + 1);
+      if (shape.z == 1.0) {
+        vec4 s = sphereAt(uint(texelFetch(order_tex, int(shape.y)).r));
+        kept += addCap(s, s, p, n, i, j, highest, f) ? 1 : 0;
+      } else if (bound.w <= MERGE_SIN * length(bound.xyz - p)) {
+        kept += addCap(vec4(bound.xyz, sqrt(shape.x)), bound, p, n, i, j, highest, f) ? 1 : 0;
+      } else {
+        ++node;  // its children
+        continue;
+      }
+      node = int(shape.w);
     }
   }
   return kept;

@@ -91,7 +91,7 @@ Occluders BlockerFrame::occluders(int i, int j, std::span<const double> sigma, b
   const glm::dvec3 p = position(i, j);
   std::vector<std::uint32_t> members;  // the truth takes every sphere of a listed group
   for (std::uint32_t g : bins_.sky(i, j))
-    for (std::uint32_t m = 0; m < groups_.groups[g].count; ++m) members.push_back(groups_.order[groups_.groups[g].first + m]);
+    for (std::uint32_t m = 0; m < groups_.group(g).count; ++m) members.push_back(groups_.order[groups_.group(g).first + m]);
   for (std::uint32_t k : members) {
     const blockers::Sphere& s = spheres_[k];
     const glm::dvec3 to_c = s.centre - p;

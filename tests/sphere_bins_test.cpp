@@ -58,9 +58,9 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
     o.lighting->sun.direction = sun;
     const SphereGroups groups = group_spheres(spheres, 60.0);
     std::vector<std::uint32_t> group_of(spheres.size());
-    for (std::uint32_t g = 0; g < groups.groups.size(); ++g)
-      for (std::uint32_t m = 0; m < groups.groups[g].count; ++m) group_of[groups.order[groups.groups[g].first + m]] = g;
-    EXPECT_LT(groups.groups.size(), spheres.size()) << "some spheres share a group";
+    for (std::uint32_t g = 0; g < groups.size(); ++g)
+      for (std::uint32_t m = 0; m < groups.group(g).count; ++m) group_of[groups.order[groups.group(g).first + m]] = g;
+    EXPECT_LT(groups.size(), spheres.size()) << "some spheres share a group";
     const SkyBlockingOptions frame = shading::frame_blocking(o, spheres);
     const SphereBins bins = shading::frame_bins(f, spheres, groups, frame, o);
     const BlockerOptions& blocking = frame.blocker;

@@ -52,14 +52,7 @@ int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::
     if (options.horizon_cull && below_horizon(extent, r)) return;
     kept += add_log_visibility(s, r.position, r.normal, options.blocker, z, f_s) ? 1 : 0;
   };
-  for (std::uint32_t g : candidates) {
-    const SphereGroup& group = groups.groups[g];
-    if (seen_as_one(group, glm::length(group.centre - r.position), options.merge_sin)) {
-      add(equivalent_sphere(group), {group.centre, group.bound});
-      continue;
-    }
-    for (std::uint32_t m = group.first; m < group.first + group.count; ++m) add(spheres[groups.order[m]], spheres[groups.order[m]]);
-  }
+  for (std::uint32_t g : candidates) for_each_cap(spheres, groups, g, r.position, options.merge_sin, add);
   if (kept == 0) return 0;
   for (std::size_t q = 0; q < size; ++q) log_sum[q] = (r.log_t.empty() ? 0.0 : r.log_t[q]) + f_s[q];
   switch (options.composition) {

@@ -33,10 +33,12 @@ struct SkyBlockingOptions {
   sh::HybOptions hyb;
   // Cull spheres whose top lies below the terrain's horizon in their direction.
   bool horizon_cull = true;
-  // A group whose bounding sphere a receiver sees within asin(merge_sin) is one cap
-  // (sphere_groups.h; 0: never). 0.05 (2.9°): ten airliners 150 m over hills change
-  // skyview by at most 7e-5 against no merging (tests/renderer_blockers_test.cpp).
-  double merge_sin = 0.05;
+  // A node of a group's sphere tree whose bounding sphere a receiver sees within
+  // asin(merge_sin) is one cap (sphere_groups.h; 0: never). 0.04 (2.3°): ten airliners
+  // 150 m over hills change skyview by at most 9.7e-5 against no merging (0.05: 1.1e-4;
+  // tests/renderer_blockers_test.cpp); merged nodes nearer the receivers cost more
+  // error per node than whole aircraft far away.
+  double merge_sin = 0.04;
 };
 
 // One receiver. sigma: its horizon elevations (rad, floored at the tangent plane) at the

@@ -24,10 +24,10 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const SphereGroups& grou
       sky_(static_cast<std::size_t>(tiles_x_) * tiles_y_),
       sun_(sky_.size()) {
   const double inf = std::numeric_limits<double>::infinity();
-  for (std::uint32_t k = 0; k < groups.groups.size(); ++k) {
+  for (std::uint32_t k = 0; k < groups.size(); ++k) {
     // Sky: receivers within the group's reach (its equivalent sphere's, about its
     // bound: no member reaches further); the nearest lie at height z_max.
-    const SphereGroup& g = groups.groups[k];
+    const SphereGroup& g = groups.group(k);
     const double reach = sky_reach(std::sqrt(g.area), order, options) + g.bound;
     const double above = std::max(0.0, g.centre.z - grid.z_max);
     if (reach == inf) {

@@ -1,11 +1,14 @@
-// Spheres grouped into aircraft-sized clusters, a two-level sphere tree (DESIGN.md
-// "Aircraft"): a receiver that sees a group's bounding sphere under a small angle takes
-// the whole group as one cap (its members' areas summed: log*(V_cap) is linear in
-// (r/d)² for small caps, and with the centroid weighted by r² the first-order errors of
-// distance and direction cancel), so ten aircraft cost ten caps there, not 300.
+// Spheres grouped into aircraft-sized clusters, each the root of a sphere tree (DESIGN.md
+// "Aircraft"): a receiver that sees a node's bounding sphere under a small angle takes
+// the node's spheres as one cap (their areas summed: log*(V_cap) is linear in (r/d)² for
+// small caps, and with the centroid weighted by r² the first-order errors of distance
+// and direction cancel), else looks at its two children. Ten aircraft far away cost ten
+// caps, not 300, and an aircraft 150 m up costs its receivers below a handful of parts.
 #pragma once
 
 #include "shading/blockers/sphere_blocker.h"
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -18,28 +21,59 @@ namespace skylit::blockers {
 // aircraft of up to ~80 m is one group.
 inline constexpr double kGroupSpan = 40.0;
 
+// A node of a group's tree: the spheres order[first, first + count) (a node's children
+// split its range in two), summarised.
 struct SphereGroup {
   glm::dvec3 centre{0.0};    // the members' centroid, weighted by r²
   double bound = 0.0;        // radius about centre that holds every member
   double area = 0.0;         // Σ r² (m²)
   std::uint32_t first = 0, count = 0;  // members: SphereGroups::order[first, first + count)
+  // The index in SphereGroups::nodes just past this node's subtree; a node with
+  // children (count > 1) has its first child at the next index.
+  std::uint32_t next = 0;
 };
 
 struct SphereGroups {
-  std::vector<SphereGroup> groups;
+  std::vector<SphereGroup> nodes;    // each group's tree in pre-order, group after group
+  std::vector<std::uint32_t> roots;  // group g's tree: nodes[roots[g], group(g).next)
   std::vector<std::uint32_t> order;  // sphere indices, group by group
+  std::size_t size() const { return roots.size(); }
+  const SphereGroup& group(std::size_t g) const { return nodes[roots[g]]; }
 };
 
 // Greedy, in input order: each sphere joins the first group whose first sphere lies
-// within `span`, or starts one.
+// within `span`, or starts one. A group's tree halves each node at the median of its
+// centres along their longest extent, down to single spheres.
 SphereGroups group_spheres(std::span<const Sphere> spheres, double span = kGroupSpan);
 
-// Whether a receiver at distance d from the group's centre takes it as one cap:
+// Whether a receiver at distance d from a node's centre takes it as one cap:
 // bound ≤ merge_sin · d (merge_sin 0: never).
 inline bool seen_as_one(const SphereGroup& g, double d, double merge_sin) { return g.bound <= merge_sin * d; }
 
-// The group as one sphere for the culls and the cap: at its centre, of radius √area
+// A node as one sphere for the culls and the cap: at its centre, of radius √area
 // (the cap's r/d), bounded by `bound` (the tangent-plane and horizon culls).
 inline Sphere equivalent_sphere(const SphereGroup& g) { return {g.centre, std::sqrt(g.area)}; }
+
+// Calls cap(sphere, extent) for the caps a receiver at `position` takes from group g:
+// each node it sees as one (its equivalent sphere, bounded by its bound), else the
+// node's children, down to single spheres (sphere and extent the same).
+template <class Cap>
+void for_each_cap(std::span<const Sphere> spheres, const SphereGroups& groups, std::uint32_t g,
+                  const glm::dvec3& position, double merge_sin, Cap&& cap) {
+  const std::uint32_t end = groups.group(g).next;
+  for (std::uint32_t n = groups.roots[g]; n < end;) {
+    const SphereGroup& node = groups.nodes[n];
+    if (node.count == 1) {
+      const Sphere& s = spheres[groups.order[node.first]];
+      cap(s, s);
+    } else if (seen_as_one(node, glm::length(node.centre - position), merge_sin)) {
+      cap(equivalent_sphere(node), Sphere{node.centre, node.bound});
+    } else {
+      ++n;  // its children
+      continue;
+    }
+    n = node.next;
+  }
+}
 
 }  // namespace skylit::blockers

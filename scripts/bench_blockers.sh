@@ -5,7 +5,8 @@
 # ~150 m above the ground, on BACKEND (gpu: the GLSL path, llvmpipe without a GPU;
 # reference: the CPU), against gdaldem hillshade; and a `shadow` replay of the sample
 # glider track. Usage: [PRODUCTS="shaded shadow" (empty: the replay alone)] [NO_REPLAY=1] [WORK=DIR] scripts/bench_blockers.sh [SIZE] [RUNS] [BACKEND] after a release
-# build. Prints best and median wall time over RUNS per command.
+# build. Prints best and median wall time over RUNS per command, and for the aircraft the
+# median over rounds of the ratio to no aircraft in the same round.
 set -euo pipefail
 size=${1:-1024}
 runs=${2:-3}
@@ -47,13 +48,33 @@ print_machine
   tr '\r' '\n' | grep 'computed on' || true
 time_runs "gdaldem hillshade ${size}²" gdaldem hillshade -q "$tmp/dem.tif" "$tmp/gd.tif"
 sun=(--sun-azimuth 200 --sun-elevation 35)
+# The three cases in turn, RUNS rounds: on a noisy machine the ratio within a round,
+# then its median over the rounds, is steadier than ratios of separate bests.
 for p in ${PRODUCTS-shaded shadow}; do
-  for a in none one ten; do
-    spheres=()
-    [ "$a" = none ] || spheres=(--spheres "$tmp/$a.csv")
-    time_runs "$p, aircraft: $a ($backend)" "$skylit" shade "$tmp/dem.tif" -p "$p" "${sun[@]}" "${spheres[@]}" \
-      --backend "$backend" --overwrite -o "$tmp/out.tif"
+  log="$tmp/times_$p.txt"
+  : >"$log"
+  for ((r = 0; r < runs; ++r)); do
+    for a in none one ten; do
+      spheres=()
+      [ "$a" = none ] || spheres=(--spheres "$tmp/$a.csv")
+      t0=$(date +%s.%N)
+      "$skylit" shade "$tmp/dem.tif" -p "$p" "${sun[@]}" "${spheres[@]}" --backend "$backend" --overwrite \
+        -o "$tmp/out.tif" -q || { echo "$p, aircraft: $a: FAILED"; exit 1; }
+      t1=$(date +%s.%N)
+      echo "$r $a $(echo "$t1 - $t0" | bc)" >>"$log"
+    done
   done
+  python3 - "$log" "$p" "$backend" <<'PY'
+import collections, statistics, sys
+rounds = collections.defaultdict(dict)
+for line in open(sys.argv[1]):
+    r, a, t = line.split()
+    rounds[r][a] = float(t)
+for a in ("none", "one", "ten"):
+    ts = [x[a] for x in rounds.values()]
+    ratio = "" if a == "none" else "  median ratio to none %.2fx" % statistics.median(x[a] / x["none"] for x in rounds.values())
+    print("%-64s best %7.2f s  median %7.2f s%s" % (f"{sys.argv[2]}, aircraft: {a} ({sys.argv[3]})", min(ts), statistics.median(ts), ratio))
+PY
 done
 [ -n "${NO_REPLAY:-}" ] && exit 0
 # Replay: 61 shadow frames (1 s) of the sample glider over the built-in scene (30 m texels).

@@ -58,6 +58,18 @@ std::vector<terrain::PixelRect> busy_rects(const blockers::SphereBins& bins, con
   return out;
 }
 
+// The GPU's cap-log ZH are scaled as sh::add_rotated_zh scales a ZH.
+double zh_scale(int l) { return std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)); }
+
+// CapLogTable::first_slope per l, scaled: the small caps' log* without a table read.
+std::vector<double> cap_log_slopes(const shading::ProductOptions& options) {
+  const int order = options.shaded.sh_order;
+  const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
+  std::vector<double> slopes;
+  for (int l = 0; l < order; ++l) slopes.push_back(zh_scale(l) * table.first_slope(l));
+  return slopes;
+}
+
 }  // namespace
 
 std::optional<std::string> gpu_lacks_blockers(shading::Product product, const shading::ProductOptions& options) {
@@ -86,7 +98,9 @@ void add_blocker_defines(const shading::ProductOptions& options, const BlockerBi
     d.set("GROUPS_UNIT", bindings.groups)
         .set("ORDER_UNIT", bindings.order)
         .set("MERGE_SIN", options.blockers.merge_sin)
-        .set("CAP_LOG_UNIT", bindings.cap_log).set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries);
+        .set("CAP_LOG_UNIT", bindings.cap_log)
+        .set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries)
+        .set_literal("CAP_LOG_SLOPE", glsl_float_array_literal(cap_log_slopes(options)));
 }
 
 GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBindings& bindings, bool sky)
@@ -96,9 +110,8 @@ GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBi
     const int order = options.shaded.sh_order;
     const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
     for (int e = 0; e < table.entries(); ++e)
-      for (int l = 0; l < order; ++l)  // scaled as sh::add_rotated_zh scales a ZH
-        values.push_back(static_cast<float>(std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)) *
-                                            table.values()[static_cast<std::size_t>(e) * order + l]));
+      for (int l = 0; l < order; ++l)
+        values.push_back(static_cast<float>(zh_scale(l) * table.values()[static_cast<std::size_t>(e) * order + l]));
   }
   view(cap_log_, cap_log_tex_, std::move(values), TextureFormat::R32F);
 }

@@ -22,7 +22,9 @@ CapLogTable::CapLogTable(int order, double epsilon, int entries)
     // The cap's visibility 1 − cap about +z, as a full SH vector (zonal: m = 0 only).
     for (int l = 0; l < order; ++l) v[sh::index(l, 0)] = (l == 0 ? sh::kSqrt4Pi : 0.0) - zh[l];
     const sh::Vec log_v = sh::log_product_algebra(v, epsilon);
-    for (int l = 0; l < order; ++l) values_[static_cast<std::size_t>(e) * order + l] = log_v[sh::index(l, 0)];
+    // No cap, V = 1: log* is exactly zero (the first linear piece starts from it).
+    for (int l = 0; l < order; ++l)
+      values_[static_cast<std::size_t>(e) * order + l] = e == 0 ? 0.0 : log_v[sh::index(l, 0)];
   }
 }
 

@@ -20,8 +20,12 @@ class CapLogTable {
   // The ZH (n coefficients) of log*(V) for a cap of a sphere with r/d = s ∈ [0, 1],
   // linear in s² between entries (exact as s → 0, where the log is ∝ s²).
   void log_zh(double s, std::span<double> out) const;
-  // Entries × order doubles, row per entry (the GPU's copy).
+  // Entries × order doubles, row per entry (the GPU's copy). Row 0 (s = 0) is zero.
   std::span<const double> values() const { return values_; }
+  // log_zh(s)[l] / s² below the first entry (s² < 1/(entries − 1)), where the table is
+  // one linear piece from zero: nearly every cap of an aircraft seen from the ground
+  // (d > 32 r), so the GPU takes these n numbers instead of reading two rows.
+  double first_slope(int l) const { return values_[static_cast<std::size_t>(order_) + l] * (entries_ - 1); }
   int entries() const { return entries_; }
 
   static constexpr int kEntries = 1024;

@@ -3,6 +3,7 @@
 #include "shading/blocker_frame.h"
 #include "shading/blockers/cap_log_table.h"
 #include "shading/blockers/disc_occlusion.h"
+#include "shading/blockers/receiver_budget.h"
 #include "shading/reference_pipeline.h"
 
 #include <algorithm>
@@ -100,6 +101,8 @@ void add_blocker_defines(const shading::ProductOptions& options, const BlockerBi
         .set("MERGE_SIN", options.blockers.merge_sin)
         .set("CAP_LOG_UNIT", bindings.cap_log)
         .set("CAP_LOG_ENTRIES", blockers::CapLogTable::kEntries)
+        .set("NEAR_BOUNDS", blockers::kNearBounds)
+        .set("MAX_RANKED_GROUPS", blockers::kMaxRankedGroups)
         .set_literal("CAP_LOG_SLOPE", glsl_float_array_literal(cap_log_slopes(options)));
 }
 
@@ -118,7 +121,7 @@ GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBi
 
 std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                                 const shading::ProductOptions& options) {
-  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options, spheres);
+  const blockers::SkyBlockingOptions blocking = shading::frame_blocking(options);
   const blockers::SphereGroups groups = blockers::group_spheres(spheres);
   const blockers::SphereBins bins = shading::frame_bins(field, spheres, groups, blocking, options);
   // Per tree node two texels: (centre, bound) and (area, first, count, next); the member
@@ -143,11 +146,10 @@ std::size_t GpuBlockers::upload(const terrain::HeightField& field, std::span<con
   tiles_ = bins.tiles_x() * bins.tiles_y();
   sky_rects_ = busy_rects(bins, field, true);
   sun_rects_ = busy_rects(bins, field, false);
-  // Per sphere: this times r² (sphere_blocker.h's cull_error_per_area), or a constant.
-  const blockers::BlockerOptions& b = blocking.blocker;
-  min_cap_per_area_ = b.cull_error_per_area > 0.0 ? blockers::min_cap_solid_angle(options.shaded.sh_order, b, 1.0) : 0.0;
-  min_cap_solid_angle_ = b.cull_error_per_area > 0.0 ? 0.0 : blockers::min_cap_solid_angle(options.shaded.sh_order, b, 0.0);
-  ratio_attenuation_ = b.ratio_attenuation;
+  // Each receiver's budget for the groups its bin lists (receiver_budget.h).
+  cull_budget_ = blocking.blocker.cull_error;
+  group_count_ = static_cast<int>(groups.size());
+  ratio_attenuation_ = blocking.blocker.ratio_attenuation;
   return bytes;
 }
 
@@ -160,9 +162,8 @@ void GpuBlockers::bind(const ComputeProgram& p) const {
   order_tex_.bind_sampler(bindings_.order);
   if (p.has_uniform("bin_tiles_x")) p.set_uniform("bin_tiles_x", tiles_x_);
   if (p.has_uniform("bin_tiles")) p.set_uniform("bin_tiles", tiles_);
-  if (p.has_uniform("min_cap_solid_angle"))
-    p.set_uniform("min_cap_solid_angle", static_cast<float>(min_cap_solid_angle_));
-  if (p.has_uniform("min_cap_per_area")) p.set_uniform("min_cap_per_area", static_cast<float>(min_cap_per_area_));
+  if (p.has_uniform("cull_budget")) p.set_uniform("cull_budget", static_cast<float>(cull_budget_));
+  if (p.has_uniform("frame_groups")) p.set_uniform("frame_groups", group_count_);
   if (p.has_uniform("ratio_attenuation")) p.set_uniform("ratio_attenuation", ratio_attenuation_ ? 1.0f : 0.0f);
 }
 

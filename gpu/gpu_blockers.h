@@ -57,7 +57,8 @@ class GpuBlockers {
   BufferTexture spheres_tex_, sky_bins_tex_, sun_bins_tex_, cap_log_tex_, groups_tex_, order_tex_;
   int tiles_x_ = 0, tiles_ = 0;
   std::vector<terrain::PixelRect> sky_rects_, sun_rects_;
-  double min_cap_solid_angle_ = 0.0, min_cap_per_area_ = 0.0;
+  double cull_budget_ = 0.0;
+  int group_count_ = 0;
   bool ratio_attenuation_ = false;
 };
 

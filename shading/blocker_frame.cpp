@@ -32,12 +32,9 @@ blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field) {
   return g;
 }
 
-blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres) {
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options) {
   blockers::SkyBlockingOptions b = options.blockers;
   if (options.exact) b.blocker.cull_error = kTruthCullError;
-  double area = 0.0;
-  for (const blockers::Sphere& s : spheres) area += s.radius * s.radius;
-  if (area > 0.0) b.blocker.cull_error_per_area = b.blocker.cull_error / area;
   return b;
 }
 
@@ -53,7 +50,7 @@ BlockerFrame::BlockerFrame(const terrain::HeightField& field, std::span<const bl
     : field_(field),
       spheres_(spheres),
       options_(options),
-      blocking_(frame_blocking(options, spheres)),
+      blocking_(frame_blocking(options)),
       disc_radius_(sun_shadow_options(options).radius),
       groups_(blockers::group_spheres(spheres)),
       bins_(frame_bins(field, spheres, groups_, blocking_, options)) {

@@ -24,9 +24,9 @@ inline constexpr int kTruthDiscSamples = 4096;
 
 // The receivers of a field for sphere bins (its texels, their spacing and height range).
 blockers::ReceiverGrid receiver_grid(const terrain::HeightField& field);
-// The blocker options of a frame with these spheres: the cull error (the truth's with
-// ProductOptions::exact) shared among them in proportion to their areas r².
-blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options, std::span<const blockers::Sphere> spheres);
+// The blocker options of a frame: the cull error is each receiver's budget
+// (receiver_budget.h), the truth's with ProductOptions::exact.
+blockers::SkyBlockingOptions frame_blocking(const ProductOptions& options);
 // The spheres and their groups binned over the field's texels for a frame, with the
 // frame's blocker options (frame_blocking): the GPU uploads the same.
 blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
@@ -35,8 +35,8 @@ blockers::SphereBins frame_bins(const terrain::HeightField& field, std::span<con
 
 class BlockerFrame {
  public:
-  // The blockers' cull error is a budget for all spheres together: each sphere is culled
-  // against 1/N of it (an aircraft is many spheres each too small to matter alone).
+  // The blockers' cull error is each receiver's budget for all spheres together (an
+  // aircraft is many spheres each too small to matter alone).
   BlockerFrame(const terrain::HeightField& field, std::span<const blockers::Sphere> spheres,
                const ProductOptions& options);
 
@@ -68,7 +68,7 @@ class BlockerFrame {
   const terrain::HeightField& field_;
   std::span<const blockers::Sphere> spheres_;
   const ProductOptions& options_;
-  blockers::SkyBlockingOptions blocking_;  // the cull error shared among the spheres
+  blockers::SkyBlockingOptions blocking_;
   double disc_radius_;
   blockers::SphereGroups groups_;
   blockers::SphereBins bins_;

@@ -1,9 +1,8 @@
-// Sphere bins (shading/blockers/sphere_bins.h) are conservative: every texel whose sky a
-// sphere survives the size cull for lies in a tile listing its group, and every texel
-// whose sun ray passes within the sphere's reach in one listing the sphere — checked by brute force over every texel and sphere, on a
-// projected grid and on rows of unequal spacing (a geographic DEM). And the frame's
-// budget (shading/blocker_frame.h) is shared in proportion to the spheres' areas, so the
-// culled spheres' bounds add up to it.
+// Sphere bins (shading/blockers/sphere_bins.h) are conservative: every texel where a
+// group's cull bound exceeds budget/N (N groups; a receiver may keep it, receiver_budget.h)
+// lies in a tile listing the group, and every texel whose sun ray passes within a
+// sphere's reach in one listing the sphere — checked by brute force over every texel and
+// group or sphere, on a projected grid and on rows of unequal spacing (a geographic DEM).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,8 +16,8 @@
 #include "shading/blocker_frame.h"
 #include "shading/reference_pipeline.h"
 #include "shading/blockers/disc_occlusion.h"
+#include "shading/blockers/receiver_budget.h"
 #include "shading/blockers/sphere_bins.h"
-#include "shading/sh/zonal.h"
 #include "terrain/synthetic.h"
 
 namespace skylit::blockers {
@@ -57,25 +56,24 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
     o.lighting = shading::resolve_lighting(r, std::nullopt).lighting;
     o.lighting->sun.direction = sun;
     const SphereGroups groups = group_spheres(spheres, 60.0);
-    std::vector<std::uint32_t> group_of(spheres.size());
-    for (std::uint32_t g = 0; g < groups.size(); ++g)
-      for (std::uint32_t m = 0; m < groups.group(g).count; ++m) group_of[groups.order[groups.group(g).first + m]] = g;
     EXPECT_LT(groups.size(), spheres.size()) << "some spheres share a group";
-    const SkyBlockingOptions frame = shading::frame_blocking(o, spheres);
+    const SkyBlockingOptions frame = shading::frame_blocking(o);
     const SphereBins bins = shading::frame_bins(f, spheres, groups, frame, o);
-    const BlockerOptions& blocking = frame.blocker;
+    const double share = frame.blocker.cull_error / static_cast<double>(groups.size());
     const double disc = shading::sun_shadow_options(o).radius;
     int sky_pairs = 0, sun_pairs = 0;
     for (int j = 0; j < f.height; ++j)
       for (int i = 0; i < f.width; ++i) {
         const glm::dvec3 p(i * f.dx(j), -j * f.dy, f.at(i, j));
+        for (std::uint32_t g = 0; g < groups.size(); ++g) {
+          const glm::dvec3 toward = glm::normalize(groups.group(g).centre - p);  // never below the plane
+          if (node_cull_bound(groups.group(g), p, toward, o.shaded.sh_order) > share) {
+            ++sky_pairs;
+            EXPECT_TRUE(listed(bins.sky(i, j), g)) << geographic << " sky " << i << "," << j << " group " << g;
+          }
+        }
         for (std::uint32_t k = 0; k < spheres.size(); ++k) {
           const Sphere& s = spheres[k];
-          const double omega = sh::cap_solid_angle(sphere_cap_cos(s.radius, glm::length(s.centre - p)));
-          if (omega >= min_cap_solid_angle(o.shaded.sh_order, blocking, s.radius)) {
-            ++sky_pairs;
-            EXPECT_TRUE(listed(bins.sky(i, j), group_of[k])) << geographic << " sky " << i << "," << j << " sphere " << k;
-          }
           // The sun: any ray of the disc (its axis widened by the disc radius) meeting the sphere.
           const Sphere grown{s.centre, s.radius + glm::length(s.centre - p) * std::tan(disc)};
           if (ray_hits_sphere(grown, p, sun)) {
@@ -91,20 +89,6 @@ TEST(SphereBins, EveryTexelASphereReachesIsInItsTile) {
     // Bins are not the whole field: the disc of reach, not every tile.
     EXPECT_LT(bins.sky_tiles(), bins.tiles_x() * bins.tiles_y()) << geographic;
   }
-}
-
-TEST(SphereBins, TheBudgetIsSharedInProportionToArea) {
-  const std::vector<Sphere> spheres{{{0, 0, 100}, 1.0}, {{5, 0, 100}, 2.0}, {{10, 0, 100}, 0.5}};
-  shading::ProductOptions o;
-  o.blockers.blocker.cull_error = 2e-3;
-  const BlockerOptions b = shading::frame_blocking(o, spheres).blocker;
-  double total = 0.0;
-  for (const Sphere& s : spheres) total += sphere_cull_error(b, s.radius);
-  EXPECT_NEAR(total, 2e-3, 1e-15);
-  // Equal reach: the size cull's distance r/sin a at Ω_min is the same for every sphere.
-  const auto reach = [&](double r) { return sky_reach(r, o.shaded.sh_order, b); };
-  EXPECT_NEAR(reach(1.0), reach(2.0), 1e-3 * reach(1.0));
-  EXPECT_NEAR(reach(0.5), reach(2.0), 1e-3 * reach(1.0));
 }
 
 }  // namespace

@@ -142,7 +142,7 @@ TEST(SphereBlocker, CullsBelowTangentPlaneOnly) {
 TEST(SphereBlocker, SizeCullingHonoursItsErrorBound) {
   const blockers::BlockerOptions opt;  // the default cull_error
   for (int order : {2, 4, 8}) {
-    const double omega_min = blockers::min_cap_solid_angle(order, opt, 1.0);
+    const double omega_min = blockers::min_cap_solid_angle(order, opt);
     // Sphere at distance 1 whose cap has exactly omega_min: c = 1 − Ω/(2π), r = sin α.
     const double c = 1 - omega_min / (2 * kPi), r = std::sqrt(1 - c * c);
     const glm::dvec3 p(0, 0, 0), n(0, 0, 1), dir = glm::normalize(glm::dvec3(0.3, 0.1, 1));

@@ -1,5 +1,6 @@
 #include "shading/blockers/sky_blocking.h"
 
+#include "shading/blockers/receiver_budget.h"
 #include "shading/sh/sh_basis.h"
 
 #include <glm/geometric.hpp>
@@ -46,13 +47,32 @@ int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::
   std::fill(f_s.begin(), f_s.end(), 0.0);
   std::array<double, sh::kMaxOrder> zh{};
   const std::span<double> z(zh.data(), order);
+  // The budget per receiver picks the groups (receiver_budget.h); a kept group's caps
+  // are all taken, so the size cull is off below.
+  std::array<double, kMaxRankedGroups> bound_store{};
+  std::array<bool, kMaxRankedGroups> dropped_store{};
+  const bool ranked = candidates.size() <= static_cast<std::size_t>(kMaxRankedGroups);
+  const std::span<double> bounds(bound_store.data(), ranked ? candidates.size() : 0);
+  const std::span<bool> dropped(dropped_store.data(), bounds.size());
+  for (std::size_t q = 0; q < bounds.size(); ++q)
+    bounds[q] = node_cull_bound(groups.group(candidates[q]), r.position, r.normal, order);
+  const double budget = listed_budget(options.blocker.cull_error, candidates.size(), groups.size());
+  drop_smallest(bounds, budget, dropped);
+  BlockerOptions every_cap = options.blocker;
+  every_cap.cull_error = 0.0;
   int kept = 0;
   const auto add = [&](const Sphere& s, const Sphere& extent) {
     if (glm::dot(r.normal, extent.centre - r.position) + extent.radius <= 0.0) return;  // below the tangent plane
     if (options.horizon_cull && below_horizon(extent, r)) return;
-    kept += add_log_visibility(s, r.position, r.normal, options.blocker, z, f_s) ? 1 : 0;
+    kept += add_log_visibility(s, r.position, r.normal, every_cap, z, f_s) ? 1 : 0;
   };
-  for (std::uint32_t g : candidates) for_each_cap(spheres, groups, g, r.position, options.merge_sin, add);
+  for (std::size_t q = 0; q < candidates.size(); ++q) {
+    const std::uint32_t g = candidates[q];
+    if (ranked ? dropped[q]
+               : drop_unranked(node_cull_bound(groups.group(g), r.position, r.normal, order), budget, candidates.size()))
+      continue;
+    for_each_cap(spheres, groups, g, r.position, options.merge_sin, add);
+  }
   if (kept == 0) return 0;
   for (std::size_t q = 0; q < size; ++q) log_sum[q] = (r.log_t.empty() ? 0.0 : r.log_t[q]) + f_s[q];
   switch (options.composition) {

@@ -54,8 +54,9 @@ struct Receiver {
 // quarter turn is never culled).
 bool below_horizon(const Sphere& s, const Receiver& r);
 
-// For the groups listed in `candidates` (each one cap where the receiver sees it as
-// one, else its members): writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
+// For the groups listed in `candidates` less those the receiver's budget drops
+// (options.blocker.cull_error; receiver_budget.h), each one cap where the receiver sees
+// it as one, else its members: writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
 // mode's input; f_S alone without log_t), n² entries each, and returns how many caps
 // survived the culls (0: delta and log_sum are untouched). scratch holds 3·n² doubles.
 // No allocation.

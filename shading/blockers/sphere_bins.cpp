@@ -1,20 +1,13 @@
 #include "shading/blockers/sphere_bins.h"
 
+#include "shading/blockers/receiver_budget.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 namespace skylit::blockers {
-
-double sky_reach(double radius, int order, const BlockerOptions& options) {
-  const double omega = min_cap_solid_angle(order, options, radius);
-  if (!(omega > 0.0)) return std::numeric_limits<double>::infinity();
-  // Ω(α) = 2π(1 − cos α) = omega at the reach.
-  const double cos_a = 1.0 - omega / (2.0 * std::numbers::pi);
-  if (cos_a <= 0.0) return radius;  // only a receiver touching it keeps it
-  return radius / std::sqrt(1.0 - cos_a * cos_a);
-}
 
 SphereBins::SphereBins(std::span<const Sphere> spheres, const SphereGroups& groups, const ReceiverGrid& grid, int order,
                        const BlockerOptions& options, std::optional<glm::dvec3> sun, double disc_radius)
@@ -25,10 +18,10 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const SphereGroups& grou
       sun_(sky_.size()) {
   const double inf = std::numeric_limits<double>::infinity();
   for (std::uint32_t k = 0; k < groups.size(); ++k) {
-    // Sky: receivers within the group's reach (its equivalent sphere's, about its
-    // bound: no member reaches further); the nearest lie at height z_max.
+    // Sky: receivers within the group's reach at budget/N (N groups: a receiver keeps
+    // none whose bound is under that, receiver_budget.h); the nearest lie at height z_max.
     const SphereGroup& g = groups.group(k);
-    const double reach = sky_reach(std::sqrt(g.area), order, options) + g.bound;
+    const double reach = node_reach(g, order, options.cull_error / static_cast<double>(groups.size()));
     const double above = std::max(0.0, g.centre.z - grid.z_max);
     if (reach == inf) {
       add(sky_, k, -inf, inf, -inf, inf);

@@ -30,8 +30,8 @@ inline constexpr int kBinTexels = 16;  // tile edge, texels
 
 class SphereBins {
  public:
-  // Sky bins of the groups from the size cull of `options` at SH order `order` (a group
-  // reaches as far as its members: the budget is shared by area); sun bins of the
+  // Sky bins of the groups a receiver's budget (options.cull_error) may keep at SH order
+  // `order` (receiver_budget.h: none whose bound is under budget/N of N groups); sun bins of the
   // spheres when `sun` (unit, toward the sun) is above the horizontal, for a disc of
   // `disc_radius`.
   SphereBins(std::span<const Sphere> spheres, const SphereGroups& groups, const ReceiverGrid& grid, int order,
@@ -68,9 +68,5 @@ class SphereBins {
   int tiles_x_ = 0, tiles_y_ = 0;
   Lists sky_, sun_;
 };
-
-// Largest distance at which a sphere of this radius survives the size cull (+∞ when
-// the options cull nothing by size).
-double sky_reach(double radius, int order, const BlockerOptions& options);
 
 }  // namespace skylit::blockers

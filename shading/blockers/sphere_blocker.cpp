@@ -19,19 +19,13 @@ double sphere_cap_cos(double radius, double distance) {
   return std::sqrt((1.0 - s) * (1.0 + s));
 }
 
-double sphere_cull_error(const BlockerOptions& opt, double radius) {
-  return opt.cull_error_per_area > 0.0 ? opt.cull_error_per_area * radius * radius : opt.cull_error;
-}
-
-double min_cap_solid_angle(int order, const BlockerOptions& opt, double radius) {
-  return 4.0 * sh::kPi * sphere_cull_error(opt, radius) / order;
-}
+double min_cap_solid_angle(int order, const BlockerOptions& opt) { return 4.0 * sh::kPi * opt.cull_error / order; }
 
 Cull classify_sphere(const Sphere& s, const glm::dvec3& p, const glm::dvec3& n, int order, const BlockerOptions& opt) {
   const glm::dvec3 to_c = s.centre - p;
   if (glm::dot(n, to_c) + s.radius <= 0.0) return Cull::kBelowTangentPlane;
   const double omega = sh::cap_solid_angle(sphere_cap_cos(s.radius, glm::length(to_c)));
-  if (omega < min_cap_solid_angle(order, opt, s.radius)) return Cull::kTooSmall;
+  if (omega < min_cap_solid_angle(order, opt)) return Cull::kTooSmall;
   return Cull::kKeep;
 }
 
@@ -41,7 +35,7 @@ bool add_log_visibility(const Sphere& s, const glm::dvec3& p, const glm::dvec3& 
   if (glm::dot(n, to_c) + s.radius <= 0.0) return false;  // entirely below the tangent plane
   const double d = glm::length(to_c);
   const double c = sphere_cap_cos(s.radius, d);
-  if (sh::cap_solid_angle(c) < min_cap_solid_angle(static_cast<int>(zh.size()), opt, s.radius))
+  if (sh::cap_solid_angle(c) < min_cap_solid_angle(static_cast<int>(zh.size()), opt))
     return false;  // too small/far
   // Receiver at the centre: the cap is a hemisphere and its axis is undefined; use n.
   const glm::dvec3 axis = d > 0.0 ? to_c / d : n;
@@ -61,8 +55,7 @@ void validate(const BlockerOptions& opt) {
   if (!(opt.epsilon > 0.0 && opt.epsilon < 1.0)) throw std::invalid_argument("sphere blockers: epsilon must be in (0, 1)");
   if (!(opt.log_clip > 0.0 && opt.log_clip < 1.0))
     throw std::invalid_argument("sphere blockers: the log clip must be in (0, 1)");
-  if (!(opt.cull_error >= 0.0) || !std::isfinite(opt.cull_error) || !(opt.cull_error_per_area >= 0.0) ||
-      !std::isfinite(opt.cull_error_per_area))
+  if (!(opt.cull_error >= 0.0) || !std::isfinite(opt.cull_error))
     throw std::invalid_argument("sphere blockers: the cull error must be finite and ≥ 0");
 }
 

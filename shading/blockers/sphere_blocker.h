@@ -41,14 +41,10 @@ struct BlockerOptions {
   // Error target for culling: a sphere is dropped when the bound on the change of
   // the visibility vector, ‖ΔV‖/√(4π) ≤ n·Ω/(4π) (Ω = cap solid angle, n = order,
   // from |y_l0| ≤ √((2l+1)/(4π))), is below it. 0 culls nothing by size. The renderer
-  // shares it among a frame's spheres (shading/blocker_frame.h). 1e-3 (a quarter of an
-  // 8-bit code) meets the skyview targets (RMSE 0.0004, max 0.0007 against the
-  // truth below a low airliner) at a tenth of 1e-4's area (docs/accuracy.md).
+  // makes it a budget per receiver over whole aircraft (receiver_budget.h). 1e-3 (a
+  // quarter of an 8-bit code) meets the skyview targets (RMSE 0.0004, max 0.0007
+  // against the truth below a low airliner) at a tenth of 1e-4's area (docs/accuracy.md).
   double cull_error = 1e-3;
-  // > 0: a sphere of radius r is culled against cull_error_per_area·r² instead (the
-  // renderer's share of one budget among a frame's spheres: in proportion to their
-  // areas every sphere of an aircraft reaches equally far, the least reach in all).
-  double cull_error_per_area = 0.0;
 };
 
 // Throws std::invalid_argument (one line) for ε ∉ (0, 1) or a negative cull error.
@@ -59,10 +55,8 @@ enum class Cull { kKeep, kBelowTangentPlane, kTooSmall };
 // Why (or whether) a sphere is skipped for receiver p with unit normal n:
 // entirely below the tangent plane (n·(c−p) + r ≤ 0), or below the error target.
 Cull classify_sphere(const Sphere& s, const glm::dvec3& p, const glm::dvec3& n, int order, const BlockerOptions& opt);
-// The cull error of a sphere of this radius (cull_error, or cull_error_per_area·r²).
-double sphere_cull_error(const BlockerOptions& opt, double radius);
-// Smallest cap solid angle of a sphere of this radius that survives culling at this order.
-double min_cap_solid_angle(int order, const BlockerOptions& opt, double radius);
+// Smallest cap solid angle that survives culling at this order.
+double min_cap_solid_angle(int order, const BlockerOptions& opt);
 
 // Adds the log-visibility of one sphere to log_sh unless classify_sphere culls it
 // (returns whether it was added); zh: n doubles of scratch.

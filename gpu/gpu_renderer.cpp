@@ -32,9 +32,13 @@ std::unique_ptr<HeadlessContext> make_context(double& ms) {
 }
 
 // Options that give the same compiled pipeline: the kernels bake in the horizon and
-// shading options and the lighting's shape; the albedo is applied on the host.
-bool same_pipeline(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b) {
-  return shading::same_horizon_options(a, b) && same_baked_lighting(product, a, b) && a.shaded.albedo == b.shaded.albedo;
+// shading options, the lighting's shape and the blockers' merge angle and log* table
+// (gpu_blockers.h); the albedo is applied on the host.
+bool same_pipeline(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b, bool blocked) {
+  return shading::same_horizon_options(a, b) && same_baked_lighting(product, a, b) &&
+         a.shaded.albedo == b.shaded.albedo &&
+         (!blocked || (a.blockers.merge_sin == b.blockers.merge_sin &&
+                       a.blockers.blocker.log_clip == b.blockers.blocker.log_clip));
 }
 
 }  // namespace
@@ -89,7 +93,7 @@ std::optional<std::string> GpuRenderer::lacks_blockers(Product product, const sh
 
 GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::ProductOptions& options, bool blocked) {
   const auto it = std::find_if(cache_.begin(), cache_.end(), [&](const Entry& e) {
-    return e.product == product && e.blocked == blocked && same_pipeline(product, e.options, options);
+    return e.product == product && e.blocked == blocked && same_pipeline(product, e.options, options, blocked);
   });
   if (it != cache_.end()) return *it->pipeline;
   if (cache_.size() == kCachedPipelines) cache_.pop_front();  // the oldest setting

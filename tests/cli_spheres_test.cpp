@@ -92,6 +92,8 @@ TEST(CliSpheres, BadFilesFailWithOneLine) {
   expect_clean_shade_failure(dir, base + write(dir, "o.csv", "x,y,z,radius\n"), "no spheres");
   expect_clean_shade_failure(dir, base + write(dir, "g.csv", "x,y,z,radius\n1,2,3,4\n") + " --blocker-error -1",
                              "--blocker-error must be");
+  expect_clean_shade_failure(dir, base + write(dir, "g.csv", "x,y,z,radius\n1,2,3,4\n") + " --blocker-merge 0.7",
+                             "--blocker-merge must be");
 }
 
 }  // namespace

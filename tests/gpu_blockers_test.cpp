@@ -192,6 +192,20 @@ TEST_F(GpuBlockers, TenAircraftWithMergedGroupsMatchTheReference) {
   }
   std::printf("ten aircraft skyview: max |gpu - reference| %.3g (largest change %.3g)\n", worst, change);
   EXPECT_GT(change, 2e-3);
+  // The merge angle is baked into the kernel: the same renderer with every sphere alone
+  // must match the reference's every sphere alone, not reuse the merging kernel.
+  o.blockers.merge_sin = 0.0;
+  const ProductBands g_alone = render(gpu, f, Product::Skyview, o, s, std::nullopt);
+  const ProductBands c_alone = render(cpu, f, Product::Skyview, o, s, std::nullopt);
+  double worst_alone = 0.0, moved = 0.0;
+  for (std::size_t t = 0; t < c.data.size(); ++t) {
+    worst_alone = std::max(worst_alone, std::abs(static_cast<double>(g_alone.data[t]) - c_alone.data[t]));
+    moved = std::max(moved, std::abs(static_cast<double>(c_alone.data[t]) - c.data[t]));
+  }
+  std::printf("every sphere alone: max |gpu - reference| %.3g (merging moved the reference by %.3g)\n", worst_alone,
+              moved);
+  EXPECT_GT(moved, 10 * worst);  // the comparison below can tell merged from alone
+  EXPECT_LE(worst_alone, 2 * worst + 1e-6);
   EXPECT_LE(worst, tolerance::kSkyviewTol);
 }
 

@@ -384,6 +384,8 @@ int run_shade(const ShadeArgs& a) {
 
   if (const double e = a.options.blockers.blocker.cull_error; !(e >= 0.0 && std::isfinite(e)))
     throw std::invalid_argument("--blocker-error must be a finite number ≥ 0");
+  if (const double m = a.options.blockers.merge_sin; !(m >= 0.0 && m <= 0.5))
+    throw std::invalid_argument("--blocker-merge must be in [0, 0.5]");
   std::vector<blockers::Sphere> crs_spheres;
   if (!a.spheres.empty()) {
     crs_spheres = read_spheres_csv(a.spheres);  // before the DEM: a bad file fails fast
@@ -554,6 +556,10 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--blocker-error", args->options.blockers.blocker.cull_error,
                   "The most the spheres culled as too small or far may change a texel's sky visibility, together "
                   "(0 culls none by size; 1e-4 for skyview changes under a quarter of an 8-bit code)")
+      ->capture_default_str();
+  cmd->add_option("--blocker-merge", args->options.blockers.merge_sin,
+                  "The sine of the angle under which a texel takes an aircraft part as one cap (0: every sphere "
+                  "alone; larger is faster and less exact, docs/accuracy.md)")
       ->capture_default_str();
   cmd->add_option("--track", args->track,
                   "A flight track (IGC, GPX, KML gx:Track, CSV): its aircraft as sphere blockers at --time");

@@ -16,32 +16,15 @@
 
 #include <glm/geometric.hpp>
 
+#include "sphere_sets.h"
 #include "shading/blockers/receiver_budget.h"
 #include "shading/sh/zonal.h"
 
 namespace skylit::blockers {
 namespace {
 
-std::vector<Sphere> airliner(const glm::dvec3& c) {
-  std::vector<Sphere> s;
-  for (int k = 0; k < 20; ++k) s.push_back({c + glm::dvec3(0, (k - 9.5) * 1.75, 0), 0.9});
-  for (int k = 0; k < 8; ++k) s.push_back({c + glm::dvec3((k - 3.5) * 1.75, 0, 0), 1.25});
-  s.push_back({c + glm::dvec3(-9.0, 0, 2.0), 1.2});
-  s.push_back({c + glm::dvec3(-9.0, 0, 3.5), 1.2});
-  return s;
-}
-
-std::vector<std::vector<Sphere>> cases() {
-  std::vector<Sphere> fleet, scattered;
-  for (int k = 0; k < 5; ++k) {
-    const auto a = airliner({300.0 * k, 100.0 * (k % 2), 500.0});
-    fleet.insert(fleet.end(), a.begin(), a.end());
-  }
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int k = 0; k < 120; ++k) scattered.push_back({{u(rng) * 60, u(rng) * 60, 50 + u(rng) * 30}, 0.1 + 3 * u(rng)});
-  return {airliner({0, 0, 150}), fleet, std::vector<Sphere>(50, {{5, 5, 30}, 5.0}), scattered, {{{1, 2, 3}, 0.5}}};
-}
+using test::airliner;
+const auto cases = test::sphere_cases;
 
 // Σ n·Ω_i/(4π) over the node's members seen from p: what the size cull bounds per sphere.
 double members_bound(const std::vector<Sphere>& spheres, const SphereGroups& g, const SphereGroup& node,

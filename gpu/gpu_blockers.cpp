@@ -5,10 +5,10 @@
 #include "shading/blockers/disc_occlusion.h"
 #include "shading/blockers/receiver_budget.h"
 #include "shading/reference_pipeline.h"
+#include "shading/sh/sh_rotation.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -59,15 +59,13 @@ std::vector<terrain::PixelRect> busy_rects(const blockers::SphereBins& bins, con
   return out;
 }
 
-// The GPU's cap-log ZH are scaled as sh::add_rotated_zh scales a ZH.
-double zh_scale(int l) { return std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0)); }
-
-// CapLogTable::first_slope per l, scaled: the small caps' log* without a table read.
+// CapLogTable::first_slope per l, scaled as the table (sh::zh_rotation_factor): the
+// small caps' log* without a table read.
 std::vector<double> cap_log_slopes(const shading::ProductOptions& options) {
   const int order = options.shaded.sh_order;
   const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
   std::vector<double> slopes;
-  for (int l = 0; l < order; ++l) slopes.push_back(zh_scale(l) * table.first_slope(l));
+  for (int l = 0; l < order; ++l) slopes.push_back(sh::zh_rotation_factor(l) * table.first_slope(l));
   return slopes;
 }
 
@@ -113,8 +111,9 @@ GpuBlockers::GpuBlockers(const shading::ProductOptions& options, const BlockerBi
     const int order = options.shaded.sh_order;
     const blockers::CapLogTable& table = blockers::cap_log_table(order, options.blockers.blocker.log_clip);
     for (int e = 0; e < table.entries(); ++e)
-      for (int l = 0; l < order; ++l)
-        values.push_back(static_cast<float>(zh_scale(l) * table.values()[static_cast<std::size_t>(e) * order + l]));
+      for (int l = 0; l < order; ++l)  // scaled as sh::add_rotated_zh scales a ZH
+        values.push_back(
+            static_cast<float>(sh::zh_rotation_factor(l) * table.values()[static_cast<std::size_t>(e) * order + l]));
   }
   view(cap_log_, cap_log_tex_, std::move(values), TextureFormat::R32F);
 }

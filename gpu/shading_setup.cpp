@@ -4,6 +4,7 @@
 #include "shading/reference_pipeline.h"
 #include "shading/sh/sh_exp.h"
 #include "shading/sh/sh_product.h"
+#include "shading/sh/sh_rotation.h"
 #include "shading/shading_modes.h"
 
 #include <algorithm>
@@ -26,10 +27,10 @@ std::vector<double> basis_norm(int order) {
   return out;
 }
 
-// √(4π/(2l+1))·z_l: the factor of y_lm(axis) in sh::add_rotated_zh.
+// sh::zh_rotation_factor(l)·z_l: the factor of y_lm(axis) in sh::add_rotated_zh.
 std::vector<double> rotated_zh_factors(std::span<const double> zh) {
   std::vector<double> out;
-  for (std::size_t l = 0; l < zh.size(); ++l) out.push_back(std::sqrt(4.0 * sh::kPi / (2.0 * l + 1.0)) * zh[l]);
+  for (std::size_t l = 0; l < zh.size(); ++l) out.push_back(sh::zh_rotation_factor(static_cast<int>(l)) * zh[l]);
   return out;
 }
 

@@ -31,9 +31,14 @@ double node_cull_bound(const SphereGroup& node, const glm::dvec3& p, const glm::
 // (kNearBounds bounds at least; +∞ for share 0): a bin lists the group within it.
 double node_reach(const SphereGroup& node, int order, double share);
 
+// The bound under which a bin leaves a group out (node_reach's share): budget/N of a
+// frame's N groups, since a receiver ranking k ≤ N drops any group that small.
+inline double unlisted_share(double budget, std::size_t n) {
+  return n == 0 ? budget : budget / static_cast<double>(n);
+}
+
 // What is left of a receiver's budget for the k groups its bin lists out of a frame's N:
-// the bins leave out only groups whose bound is at most budget/N there (node_reach), so
-// the N − k unlisted may take that much each.
+// the N − k unlisted may take unlisted_share each, which leaves budget·k/N.
 inline double listed_budget(double budget, std::size_t k, std::size_t n) {
   return n == 0 ? budget : budget * static_cast<double>(k) / static_cast<double>(n);
 }

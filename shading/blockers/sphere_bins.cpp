@@ -21,7 +21,7 @@ SphereBins::SphereBins(std::span<const Sphere> spheres, const SphereGroups& grou
     // Sky: receivers within the group's reach at budget/N (N groups: a receiver keeps
     // none whose bound is under that, receiver_budget.h); the nearest lie at height z_max.
     const SphereGroup& g = groups.group(k);
-    const double reach = node_reach(g, order, options.cull_error / static_cast<double>(groups.size()));
+    const double reach = node_reach(g, order, unlisted_share(options.cull_error, groups.size()));
     const double above = std::max(0.0, g.centre.z - grid.z_max);
     if (reach == inf) {
       add(sky_, k, -inf, inf, -inf, inf);

@@ -30,6 +30,8 @@ Vec rotate_z(std::span<const double> coeffs, double alpha) {
   return out;
 }
 
+double zh_rotation_factor(int l) { return std::sqrt(4.0 * kPi / (2 * l + 1)); }
+
 void add_rotated_zh(std::span<const double> zh, const glm::dvec3& axis, double scale, std::span<double> out) {
   const int order = order_of(out.size());
   if (zh.size() < static_cast<std::size_t>(order)) throw std::invalid_argument("add_rotated_zh: ZH too short");
@@ -37,7 +39,7 @@ void add_rotated_zh(std::span<const double> zh, const glm::dvec3& axis, double s
   if (order > 16) throw std::invalid_argument("add_rotated_zh: order too large");
   eval_basis(order, axis, std::span<double>(y, num_coeffs(order)));
   for (int l = 0; l < order; ++l) {
-    const double k = scale * std::sqrt(4.0 * kPi / (2 * l + 1)) * zh[l];
+    const double k = scale * zh_rotation_factor(l) * zh[l];
     for (int m = -l; m <= l; ++m) out[index(l, m)] += k * y[index(l, m)];
   }
 }

@@ -14,8 +14,12 @@ namespace skylit::sh {
 void rotate_z_inplace(std::span<double> coeffs, double alpha);
 Vec rotate_z(std::span<const double> coeffs, double alpha);
 
+// √(4π/(2l+1)): the factor of z_l·y_lm(axis) in a rotated ZH (below; the GPU's
+// tables are scaled by it).
+double zh_rotation_factor(int l);
+
 // ZH vector z_l (l < order) rotated so that its axis points along `axis`
-// (unit): f_lm = √(4π/(2l+1))·z_l·y_lm(axis).
+// (unit): f_lm = zh_rotation_factor(l)·z_l·y_lm(axis).
 Vec rotate_zh(std::span<const double> zh, const glm::dvec3& axis);
 // The same, accumulated into `out` (order = sqrt(out.size())) with a scale.
 void add_rotated_zh(std::span<const double> zh, const glm::dvec3& axis, double scale, std::span<double> out);

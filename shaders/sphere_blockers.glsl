@@ -1,7 +1,7 @@
 // Sphere blockers (aircraft) seen from a texel: GLSL twin of shading/blockers/
 // (sphere_bins.h lists, disc_occlusion.h disc_fraction_left, sphere_blocker.h
 // add_log_visibility with the log* table of cap_log_table.h, sky_blocking.h
-// below_horizon). The spheres and their bins come from C++ per frame
+// horizon_side). The spheres and their bins come from C++ per frame
 // (gpu/gpu_blockers.h): the same bins as the reference's, so a texel tests the same
 // spheres.
 //
@@ -128,35 +128,44 @@ uniform float cull_budget;
 uniform int frame_groups;
 uniform float ratio_attenuation;    // 1: scale each log by r/d (BlockerOptions)
 
-// Whether sphere s seen from p lies wholly below the texel's visibility horizons
-// (floored, rad; flooredHorizon(k) at the math azimuths 2 pi k/AZIMUTHS) in the azimuths
-// its cap spans: blockers::below_horizon. highest: (sin, cos) of the highest of those
-// horizons (a sphere whose top rises above it is kept without reading any).
-float flooredHorizon(int k, int j, int i, vec3 n);
-// (sin, cos) of the horizon whose tangent is m (m = -inf: -pi/2).
-vec2 horizonSinCos(float m) { return isinf(m) ? vec2(-1.0, 0.0) : vec2(m, 1.0) / sqrt(1.0 + m * m); }
-bool belowHorizon(vec4 s, vec3 p, vec3 n, int i, int j, vec2 highest) {
+// The tangent of the texel's visibility horizon (floored) at the math azimuth
+// 2 pi k/AZIMUTHS.
+float flooredHorizonSlope(int k);
+
+// Where sphere s seen from p lies against the texel's visibility horizons in the
+// azimuths its cap spans (blockers::horizon_side): HORIZON_BELOW, HORIZON_ABOVE or
+// HORIZON_ACROSS. highest: the tangent of the highest horizon; against it a sphere whose
+// bottom is over it is above, and (below_only: the caller asks only whether it is below)
+// one whose top is over it is not below, without reading any horizon. Elevations are
+// compared as tangents (e + a and e - a for the centre's elevation e, sin a = r/d, by the
+// sine and cosine of sums: no asin or atan for nearly all of an aircraft's spheres).
+const int HORIZON_ABOVE = 0, HORIZON_BELOW = 1, HORIZON_ACROSS = 2;
+int horizonSide(vec4 s, vec3 p, float highest, bool below_only) {
   vec3 to_c = s.xyz - p;
   float d = length(to_c);
-  if (d <= s.w) return false;
+  if (d <= s.w) return HORIZON_ACROSS;
   float horizontal = length(to_c.xy);
-  // The top e + a (e the centre's elevation, sin a = r/d) against the zenith and the
-  // highest horizon H = (sin H, cos H), by the sine and cosine of sums: no asin or atan
-  // for the spheres above every horizon (nearly all of an aircraft's).
   float sin_a = s.w / d, cos_a = sqrt(max(0.0, (1.0 - sin_a) * (1.0 + sin_a)));
   float sin_top = (to_c.z * cos_a + horizontal * sin_a) / d, cos_top = (horizontal * cos_a - to_c.z * sin_a) / d;
-  if (cos_top <= 0.0 || sin_top * highest.y - cos_top * highest.x >= 0.0) return false;
-  float top = atan(to_c.z, horizontal) + asin(sin_a);
-  if (top >= HALF_PI) return false;
-  float cos_e = horizontal / d, sin_half = s.w / d;
-  if (sin_half >= cos_e * sin(PI / 4.0)) return false;  // wider than a quarter turn
-  float spread = asin(sin_half / cos_e);
+  float sin_bottom = (to_c.z * cos_a - horizontal * sin_a) / d, cos_bottom = (horizontal * cos_a + to_c.z * sin_a) / d;
+  // The top at or past the zenith, or over every horizon: never below.
+  bool top_clear = cos_top <= 0.0 || sin_top >= highest * cos_top;
+  if (cos_bottom > 0.0 && sin_bottom >= highest * cos_bottom) return HORIZON_ABOVE;
+  if (top_clear && below_only) return HORIZON_ACROSS;
+  float cos_e = horizontal / d;
+  if (sin_a >= cos_e * sin(PI / 4.0)) return HORIZON_ACROSS;  // wider than a quarter turn
+  float spread = asin(sin_a / cos_e);
   float step = TWO_PI / float(AZIMUTHS);
   float phi = atan(to_c.y, to_c.x);
   int k0 = int(floor((phi - spread) / step)), k1 = int(ceil((phi + spread) / step));
-  for (int k = k0; k <= k1; ++k)
-    if (top >= flooredHorizon(((k % AZIMUTHS) + AZIMUTHS) % AZIMUTHS, j, i, n)) return false;
-  return true;
+  float lowest = 1.0 / 0.0, high = -1.0 / 0.0;
+  for (int k = k0; k <= k1; ++k) {
+    float m = flooredHorizonSlope(((k % AZIMUTHS) + AZIMUTHS) % AZIMUTHS);
+    lowest = min(lowest, m);
+    high = max(high, m);
+  }
+  if (!top_clear && sin_top < lowest * cos_top) return HORIZON_BELOW;
+  return cos_bottom > 0.0 && sin_bottom >= high * cos_bottom ? HORIZON_ABOVE : HORIZON_ACROSS;
 }
 
 // Whether the texel's sky bin lists any sphere.
@@ -165,15 +174,17 @@ bool skyBinned(int i, int j) {
   return range.x != range.y;
 }
 
-// Adds the log*-visibility of the cap of sphere s (the equivalent sphere of a group:
-// sphere_groups.h) unless it is culled: below the tangent plane or the horizon (both
-// tested on `extent`, the sphere or the group's bound). Returns whether it was added.
-bool addCap(vec4 s, vec4 extent, vec3 p, vec3 n, int i, int j, vec2 highest, inout float f[SH_COEFFS]) {
+// Whether the sphere (or a node's bound) lies wholly below the tangent plane of normal n at p.
+bool belowPlane(vec4 extent, vec3 p, vec3 n) { return dot(n, extent.xyz - p) + extent.w <= 0.0; }
+
+// Adds the log*-visibility of the cap of sphere s (a single sphere, or the equivalent
+// sphere of a node: sphere_groups.h) unless it lies below the tangent plane
+// (blockers::add_log_visibility). Returns whether it was added.
+bool addCap(vec4 s, vec3 p, vec3 n, inout float f[SH_COEFFS]) {
+  if (belowPlane(s, p, n)) return false;
   vec3 to_c = s.xyz - p;
-  if (dot(n, extent.xyz - p) + extent.w <= 0.0 || dot(n, to_c) + s.w <= 0.0) return false;  // below the tangent plane
   float d = length(to_c);
   float ratio = d > s.w ? s.w / d : 1.0;
-  if (belowHorizon(extent, p, n, i, j, highest)) return false;
   float s2 = clamp(ratio * ratio, 0.0, 1.0), x = s2 * float(CAP_LOG_ENTRIES - 1);
   float scale = ratio_attenuation > 0.0 ? ratio : 1.0;
   float zh[SH_ORDER];
@@ -211,10 +222,10 @@ float rootCullBound(int node, vec3 p, vec3 n) {
 // nodes) less those the receiver's budget drops (blockers::drop_smallest over
 // blockers::listed_budget), per group the caps of blockers::for_each_cap (a node the
 // texel sees within asin(MERGE_SIN) is one cap, else its children, down to single
-// spheres) that survive the culls; returns how many caps did. highest_slope: the tangent
-// of the texel's highest visibility horizon. Twin of blockers::block_sky.
-int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[SH_COEFFS]) {
-  vec2 highest = horizonSinCos(highest_slope);
+// spheres; a node across the horizon is never one) that survive the culls; returns how
+// many caps did. highest: the tangent of the texel's highest visibility horizon. Twin of
+// blockers::block_sky.
+int sphereLogVisibility(int i, int j, vec3 n, float highest, out float f[SH_COEFFS]) {
   for (int r = 0; r < SH_COEFFS; ++r) f[r] = 0.0;
   uvec2 range = binRange(sky_bins_tex, i, j);
   uint first = range.x, last = range.y;
@@ -234,7 +245,7 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[S
       if (below <= budget) dropped |= 1u << q;
     }
   }
-  int kept = 0;
+  int kept = 0, side = HORIZON_ACROSS;
   for (uint q = first; q < last; ++q) {
     int node = int(binEntry(sky_bins_tex, q));
     if (ranked ? (dropped & (1u << (q - first))) != 0u : rootCullBound(node, p, n) <= budget / float(listed)) continue;
@@ -243,9 +254,11 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest_slope, out float f[S
       vec4 bound = texelFetch(groups_tex, 2 * node), shape = texelFetch(groups_tex, 2 * node + 1);
       if (shape.z == 1.0) {
         vec4 s = sphereAt(uint(texelFetch(order_tex, int(shape.y)).r));
-        kept += addCap(s, s, p, n, i, j, highest, f) ? 1 : 0;
-      } else if (bound.w <= MERGE_SIN * length(bound.xyz - p)) {
-        kept += addCap(vec4(bound.xyz, sqrt(shape.x)), bound, p, n, i, j, highest, f) ? 1 : 0;
+        if (!belowPlane(s, p, n) && horizonSide(s, p, highest, true) != HORIZON_BELOW) kept += addCap(s, p, n, f) ? 1 : 0;
+      } else if (bound.w <= MERGE_SIN * length(bound.xyz - p) &&
+                 (belowPlane(bound, p, n) || (side = horizonSide(bound, p, highest, false)) != HORIZON_ACROSS)) {
+        // One cap, unless wholly below the tangent plane or the horizon.
+        if (!belowPlane(bound, p, n) && side == HORIZON_ABOVE) kept += addCap(vec4(bound.xyz, sqrt(shape.x)), p, n, f) ? 1 : 0;
       } else {
         ++node;  // its children
         continue;

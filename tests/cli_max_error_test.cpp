@@ -13,13 +13,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("skylit_max_error_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+// A scratch folder per test, removed after it.
+class CliMaxError : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("skylit_max_error_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  const fs::path& temp_dir() const { return dir_; }
 
-TEST(CliMaxError, BadInputIsOneLineAndNoFile) {
+ private:
+  fs::path dir_;
+};
+
+TEST_F(CliMaxError, BadInputIsOneLineAndNoFile) {
   const fs::path out = temp_dir() / "bad.tif";
   for (const std::string arg : {"0", "-0.1", "abc", "nan"}) {
     const skylit::testing::Run r = run_skylit("shade --synthetic --size 32 -p svf --max-error " + arg + " -o " + out.string(), true);
@@ -34,7 +42,7 @@ TEST(CliMaxError, BadInputIsOneLineAndNoFile) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(CliMaxError, ChoiceLineAndExplicitKnobsWinWithANote) {
+TEST_F(CliMaxError, ChoiceLineAndExplicitKnobsWinWithANote) {
   const fs::path out = temp_dir() / "note.tif";
   skylit::testing::Run r = run_skylit("shade --synthetic --size 32 -p svf --max-error 0.05 --overwrite -o " + out.string(), true);
   ASSERT_EQ(r.status, 0) << r.out;
@@ -55,7 +63,7 @@ double rmse(const OutputRaster& a, const OutputRaster& b) {
   return n ? std::sqrt(s / n) : NAN;
 }
 
-TEST(CliMaxError, MeasuredErrorOnARealDemMeetsTheTarget) {
+TEST_F(CliMaxError, MeasuredErrorOnARealDemMeetsTheTarget) {
   const fs::path dem = fs::path(SKYLIT_SHARED_DIR) / "dem" / "mt_st_helens_usgs30_utm10n.tif";
   SKYLIT_REQUIRE(terrain::testing::missing_file(dem.string()));
   const fs::path d = temp_dir(), crop = d / "crop.tif";

@@ -163,7 +163,9 @@ TEST_F(GpuBlockers, IrradianceMatchesTheReferenceRelatively) {
 
 TEST_F(GpuBlockers, TenAircraftWithMergedGroupsMatchTheReference) {
   // Ten 18-sphere aircraft 150 m over 768 m of hills at 8 m texels: far receivers take
-  // each as one cap (sphere_groups.h), near ones its spheres, on both backends alike.
+  // each as one cap (sphere_groups.h), near ones its spheres, on both backends alike. A
+  // wide merge sine (0.5: every aircraft one cap), so that merging moves the result well
+  // beyond the backends' difference (at the default 0.04 it moves it by about 1e-6).
   terrain::SyntheticOptions so;
   so.width = so.height = 96;
   so.spacing = 8.0;
@@ -180,6 +182,7 @@ TEST_F(GpuBlockers, TenAircraftWithMergedGroupsMatchTheReference) {
   }
   ProductOptions o;
   o.threads = 2;
+  o.blockers.merge_sin = 0.5;
   GpuRenderer gpu;
   shading::ReferenceRenderer cpu;
   const ProductBands g = render(gpu, f, Product::Skyview, o, s, std::nullopt);
@@ -204,7 +207,7 @@ TEST_F(GpuBlockers, TenAircraftWithMergedGroupsMatchTheReference) {
   }
   std::printf("every sphere alone: max |gpu - reference| %.3g (merging moved the reference by %.3g)\n", worst_alone,
               moved);
-  EXPECT_GT(moved, 10 * worst);  // the comparison below can tell merged from alone
+  EXPECT_GT(moved, 5 * worst);  // the comparison below can tell merged from alone
   EXPECT_LE(worst_alone, 2 * worst + 1e-6);
   EXPECT_LE(worst, tolerance::kSkyviewTol);
 }

@@ -215,6 +215,38 @@ TEST(RendererBlockers, TenAircraftMergedFarAwayMatchUnmerged) {
   EXPECT_LE(worst, 1e-4);  // a tenth of the cull budget
 }
 
+TEST(RendererBlockers, NoMergedCapReachesAcrossTheHorizon) {
+  // An airliner behind a 40 m ridge, as high as the ridge's top seen from the plain in
+  // front: a cap merged across the horizon would darken the sky by the part the ridge
+  // already hides. Nodes across the horizon take their members, so even wide merge sines
+  // stay within the merging's own small error of taking every sphere alone. No cull.
+  terrain::HeightField f(96, 96, 4.0);
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 44; i < 48; ++i) f.at(i, j) = 40.0f;
+  f.mark_all_dirty();
+  const auto plane = aircraft({55 * 4.0, -48 * 4.0, 80.0}, 35.0);
+  ProductOptions alone = options();
+  alone.blockers.merge_sin = 0.0;
+  alone.blockers.blocker.cull_error = 0.0;
+  const ProductBands bare = render(f, Product::Skyview, alone, {}), a = render(f, Product::Skyview, alone, plane);
+  for (double merge_sin : {0.2, 0.4}) {
+    ProductOptions merged = alone;
+    merged.blockers.merge_sin = merge_sin;
+    const ProductBands m = render(f, Product::Skyview, merged, plane);
+    double worst = 0.0, change = 0.0;
+    for (int j = 0; j < f.height; ++j)
+      for (int i = 0; i < 40; ++i) {  // the plain in front of the ridge
+        const std::size_t t = static_cast<std::size_t>(j) * f.width + i;
+        worst = std::max(worst, std::abs(static_cast<double>(m.data[t]) - a.data[t]));
+        change = std::max(change, std::abs(static_cast<double>(a.data[t]) - bare.data[t]));
+      }
+    std::printf("behind a ridge, merge sine %.2f: merged against alone max %.2g (largest change %.3g)\n", merge_sin,
+                worst, change);
+    EXPECT_GT(change, 2e-4);
+    EXPECT_LE(worst, 0.02 * change);
+  }
+}
+
 TEST(RendererBlockers, EachReceiverDropsNoMoreThanTheBudget) {
   // Ten airliners over 768 m of hills: what the cull drops at a texel (whole aircraft, the
   // smallest bounds first; receiver_budget.h) moves its skyview by at most the budget,

@@ -12,29 +12,36 @@
 
 namespace skylit::blockers {
 
-bool below_horizon(const Sphere& s, const Receiver& r) {
+HorizonSide horizon_side(const Sphere& s, const Receiver& r) {
   const int w = static_cast<int>(r.sigma.size());
-  if (w == 0) return false;
+  if (w == 0) return HorizonSide::kAbove;
   const glm::dvec3 to_c = s.centre - r.position;
   const double d = glm::length(to_c);
-  if (d <= s.radius) return false;
+  if (d <= s.radius) return HorizonSide::kAcross;
   const double half = std::asin(s.radius / d);
   const double horizontal = std::hypot(to_c.x, to_c.y);
-  const double top = std::atan2(to_c.z, horizontal) + half;
-  if (top >= std::numbers::pi / 2) return false;
+  const double elevation = std::atan2(to_c.z, horizontal);
+  const double top = elevation + half, bottom = elevation - half;
   // Azimuth half-width of the cap: asin(sin α / cos e) at the centre's elevation e.
   const double cos_e = horizontal / d;
   const double sin_half = std::sin(half);
-  if (sin_half >= cos_e * std::sin(std::numbers::pi / 4)) return false;  // wider than a quarter turn
+  if (sin_half >= cos_e * std::sin(std::numbers::pi / 4)) {  // wider than a quarter turn
+    return bottom >= *std::max_element(r.sigma.begin(), r.sigma.end()) ? HorizonSide::kAbove : HorizonSide::kAcross;
+  }
   const double spread = std::asin(sin_half / cos_e);
   const double step = 2.0 * std::numbers::pi / w;
   const double phi = std::atan2(to_c.y, to_c.x);
   // Every sample from the one at or before phi − spread to the one at or after phi + spread.
   const int k0 = static_cast<int>(std::floor((phi - spread) / step));
   const int k1 = static_cast<int>(std::ceil((phi + spread) / step));
-  double lowest = std::numbers::pi;
-  for (int k = k0; k <= k1; ++k) lowest = std::min(lowest, r.sigma[((k % w) + w) % w]);
-  return top < lowest;
+  double lowest = std::numbers::pi, highest = -std::numbers::pi;
+  for (int k = k0; k <= k1; ++k) {
+    const double sigma = r.sigma[((k % w) + w) % w];
+    lowest = std::min(lowest, sigma);
+    highest = std::max(highest, sigma);
+  }
+  if (top < std::numbers::pi / 2 && top < lowest) return HorizonSide::kBelow;
+  return bottom >= highest ? HorizonSide::kAbove : HorizonSide::kAcross;
 }
 
 int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::span<const std::uint32_t> candidates,
@@ -61,17 +68,23 @@ int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::
   BlockerOptions every_cap = options.blocker;
   every_cap.cull_error = 0.0;
   int kept = 0;
+  const auto below_plane = [&](const Sphere& extent) {
+    return glm::dot(r.normal, extent.centre - r.position) + extent.radius <= 0.0;
+  };
   const auto add = [&](const Sphere& s, const Sphere& extent) {
-    if (glm::dot(r.normal, extent.centre - r.position) + extent.radius <= 0.0) return;  // below the tangent plane
-    if (options.horizon_cull && below_horizon(extent, r)) return;
+    if (below_plane(extent)) return;
+    if (options.horizon_cull && horizon_side(extent, r) == HorizonSide::kBelow) return;
     kept += add_log_visibility(s, r.position, r.normal, every_cap, z, f_s) ? 1 : 0;
+  };
+  const auto may_merge = [&](const Sphere& extent) {
+    return !options.horizon_cull || below_plane(extent) || horizon_side(extent, r) != HorizonSide::kAcross;
   };
   for (std::size_t q = 0; q < candidates.size(); ++q) {
     const std::uint32_t g = candidates[q];
     if (ranked ? dropped[q]
                : drop_unranked(node_cull_bound(groups.group(g), r.position, r.normal, order), budget, candidates.size()))
       continue;
-    for_each_cap(spheres, groups, g, r.position, options.merge_sin, add);
+    for_each_cap(spheres, groups, g, r.position, options.merge_sin, add, may_merge);
   }
   if (kept == 0) return 0;
   for (std::size_t q = 0; q < size; ++q) log_sum[q] = (r.log_t.empty() ? 0.0 : r.log_t[q]) + f_s[q];

@@ -31,7 +31,8 @@ struct SkyBlockingOptions {
   BlockerOptions blocker;
   Composition composition = Composition::kProduct;
   sh::HybOptions hyb;
-  // Cull spheres whose top lies below the terrain's horizon in their direction.
+  // Cull spheres whose top lies below the terrain's horizon in their direction, and
+  // merge no node across it.
   bool horizon_cull = true;
   // A node of a group's sphere tree whose bounding sphere a receiver sees within
   // asin(merge_sin) is one cap (sphere_groups.h; 0: never). 0.04 (2.3°): ten airliners
@@ -50,14 +51,18 @@ struct Receiver {
   std::span<const double> sigma, vis_t, log_t;
 };
 
-// Whether the sphere, seen from the receiver, lies wholly below its horizon: its top
-// below the lowest horizon sample in the azimuths its cap spans (a cap wider than a
-// quarter turn is never culled).
-bool below_horizon(const Sphere& s, const Receiver& r);
+// Where a sphere, seen from the receiver, lies against its horizon in the azimuths its
+// cap spans: wholly below (its top under the lowest horizon sample there), wholly above
+// (its bottom at or over the highest) or across. A cap wider than a quarter turn is
+// never below, and above only when over every sample; no horizons: above.
+enum class HorizonSide { kAbove, kBelow, kAcross };
+HorizonSide horizon_side(const Sphere& s, const Receiver& r);
 
 // For the groups listed in `candidates` less those the receiver's budget drops
 // (options.blocker.cull_error; receiver_budget.h), each one cap where the receiver sees
-// it as one, else its members: writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
+// it as one and it lies wholly on one side of the horizon (a node across it takes its
+// children, so no part of an aircraft hidden by the terrain darkens the sky through a
+// merged cap), else its members: writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
 // mode's input; f_S alone without log_t), n² entries each, and returns how many caps
 // survived the culls (0: delta and log_sum are untouched). scratch holds 3·n² doubles.
 // No allocation.

@@ -54,20 +54,27 @@ inline bool seen_as_one(const SphereGroup& g, double d, double merge_sin) { retu
 // (the cap's r/d), bounded by `bound` (the tangent-plane and horizon culls).
 inline Sphere equivalent_sphere(const SphereGroup& g) { return {g.centre, std::sqrt(g.area)}; }
 
+// Any node may be one cap (for_each_cap's default).
+struct AnyNode {
+  bool operator()(const Sphere&) const { return true; }
+};
+
 // Calls cap(sphere, extent) for the caps a receiver at `position` takes from group g:
-// each node it sees as one (its equivalent sphere, bounded by its bound), else the
-// node's children, down to single spheres (sphere and extent the same).
-template <class Cap>
+// each node it sees as one and may_merge(its bound) allows (its equivalent sphere,
+// bounded by its bound), else the node's children, down to single spheres (sphere and
+// extent the same).
+template <class Cap, class MayMerge = AnyNode>
 void for_each_cap(std::span<const Sphere> spheres, const SphereGroups& groups, std::uint32_t g,
-                  const glm::dvec3& position, double merge_sin, Cap&& cap) {
+                  const glm::dvec3& position, double merge_sin, Cap&& cap, MayMerge may_merge = {}) {
   const std::uint32_t end = groups.group(g).next;
   for (std::uint32_t n = groups.roots[g]; n < end;) {
     const SphereGroup& node = groups.nodes[n];
     if (node.count == 1) {
       const Sphere& s = spheres[groups.order[node.first]];
       cap(s, s);
-    } else if (seen_as_one(node, glm::length(node.centre - position), merge_sin)) {
-      cap(equivalent_sphere(node), Sphere{node.centre, node.bound});
+    } else if (const Sphere extent{node.centre, node.bound};
+               seen_as_one(node, glm::length(node.centre - position), merge_sin) && may_merge(extent)) {
+      cap(equivalent_sphere(node), extent);
     } else {
       ++n;  // its children
       continue;

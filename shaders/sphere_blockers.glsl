@@ -128,19 +128,20 @@ uniform float cull_budget;
 uniform int frame_groups;
 uniform float ratio_attenuation;    // 1: scale each log by r/d (BlockerOptions)
 
-// The tangent of the texel's visibility horizon (floored) at the math azimuth
-// 2 pi k/AZIMUTHS.
-float flooredHorizonSlope(int k);
+// The tangent of texel (i, j)'s visibility horizon (floored; n its normal) at the math
+// azimuth 2 pi k/AZIMUTHS.
+float flooredHorizonSlope(int k, int j, int i, vec3 n);
 
 // Where sphere s seen from p lies against the texel's visibility horizons in the
 // azimuths its cap spans (blockers::horizon_side): HORIZON_BELOW, HORIZON_ABOVE or
-// HORIZON_ACROSS. highest: the tangent of the highest horizon; against it a sphere whose
-// bottom is over it is above, and (below_only: the caller asks only whether it is below)
-// one whose top is over it is not below, without reading any horizon. Elevations are
-// compared as tangents (e + a and e - a for the centre's elevation e, sin a = r/d, by the
-// sine and cosine of sums: no asin or atan for nearly all of an aircraft's spheres).
+// HORIZON_ACROSS; below_only: the caller asks only whether it is below (ACROSS stands
+// for not below). highest: the tangent of the texel's highest horizon: a sphere whose
+// bottom is over it is above, one whose top is over it not below, without reading any
+// horizon (nearly all of an aircraft's spheres). Elevations are compared as tangents
+// (of e + a and e - a, e the centre's elevation and sin a = r/d, by the sine and cosine
+// of sums: no asin or atan for those).
 const int HORIZON_ABOVE = 0, HORIZON_BELOW = 1, HORIZON_ACROSS = 2;
-int horizonSide(vec4 s, vec3 p, float highest, bool below_only) {
+int horizonSide(vec4 s, vec3 p, vec3 n, int i, int j, float highest, bool below_only) {
   vec3 to_c = s.xyz - p;
   float d = length(to_c);
   if (d <= s.w) return HORIZON_ACROSS;
@@ -158,14 +159,14 @@ int horizonSide(vec4 s, vec3 p, float highest, bool below_only) {
   float step = TWO_PI / float(AZIMUTHS);
   float phi = atan(to_c.y, to_c.x);
   int k0 = int(floor((phi - spread) / step)), k1 = int(ceil((phi + spread) / step));
-  float lowest = 1.0 / 0.0, high = -1.0 / 0.0;
-  for (int k = k0; k <= k1; ++k) {
-    float m = flooredHorizonSlope(((k % AZIMUTHS) + AZIMUTHS) % AZIMUTHS);
-    lowest = min(lowest, m);
-    high = max(high, m);
+  // Reads until neither side is possible.
+  bool below = !top_clear, above = !below_only && cos_bottom > 0.0;
+  for (int k = k0; k <= k1 && (below || above); ++k) {
+    float m = flooredHorizonSlope(((k % AZIMUTHS) + AZIMUTHS) % AZIMUTHS, j, i, n);
+    below = below && sin_top < m * cos_top;
+    above = above && sin_bottom >= m * cos_bottom;
   }
-  if (!top_clear && sin_top < lowest * cos_top) return HORIZON_BELOW;
-  return cos_bottom > 0.0 && sin_bottom >= high * cos_bottom ? HORIZON_ABOVE : HORIZON_ACROSS;
+  return below ? HORIZON_BELOW : above ? HORIZON_ABOVE : HORIZON_ACROSS;
 }
 
 // Whether the texel's sky bin lists any sphere.
@@ -245,7 +246,9 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest, out float f[SH_COEF
       if (below <= budget) dropped |= 1u << q;
     }
   }
-  int kept = 0, side = HORIZON_ACROSS;
+  int kept = 0;
+  // A node within the budget merges without its horizon read (block_sky).
+  float unchecked = cull_budget;
   for (uint q = first; q < last; ++q) {
     int node = int(binEntry(sky_bins_tex, q));
     if (ranked ? (dropped & (1u << (q - first))) != 0u : rootCullBound(node, p, n) <= budget / float(listed)) continue;
@@ -254,11 +257,17 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest, out float f[SH_COEF
       vec4 bound = texelFetch(groups_tex, 2 * node), shape = texelFetch(groups_tex, 2 * node + 1);
       if (shape.z == 1.0) {
         vec4 s = sphereAt(uint(texelFetch(order_tex, int(shape.y)).r));
-        if (!belowPlane(s, p, n) && horizonSide(s, p, highest, true) != HORIZON_BELOW) kept += addCap(s, p, n, f) ? 1 : 0;
-      } else if (bound.w <= MERGE_SIN * length(bound.xyz - p) &&
-                 (belowPlane(bound, p, n) || (side = horizonSide(bound, p, highest, false)) != HORIZON_ACROSS)) {
-        // One cap, unless wholly below the tangent plane or the horizon.
-        if (!belowPlane(bound, p, n) && side == HORIZON_ABOVE) kept += addCap(vec4(bound.xyz, sqrt(shape.x)), p, n, f) ? 1 : 0;
+        if (!belowPlane(s, p, n) && horizonSide(s, p, n, i, j, highest, true) != HORIZON_BELOW) kept += addCap(s, p, n, f) ? 1 : 0;
+      } else if (bound.w <= MERGE_SIN * length(bound.xyz - p)) {
+        // One cap unless across the horizon (checked only beyond the budget), none
+        // where wholly below the tangent plane or the horizon.
+        bool check = nodeCullBound(bound, shape.x, p, n) > unchecked;
+        int side = belowPlane(bound, p, n) ? HORIZON_BELOW : horizonSide(bound, p, n, i, j, highest, !check);
+        if (check && side == HORIZON_ACROSS) {
+          ++node;  // its children
+          continue;
+        }
+        if (side != HORIZON_BELOW) kept += addCap(vec4(bound.xyz, sqrt(shape.x)), p, n, f) ? 1 : 0;
       } else {
         ++node;  // its children
         continue;

@@ -256,11 +256,7 @@ float flooredSlope(int k, int j, int i, vec3 n) { return max(horizonSlope(k, j, 
 // The terrain's SH visibility (log-visibility in MODE_LOG_BRDF) at texel (i, j): the
 // slices of the visibility horizons e, taken as their tangents m (then sin e =
 // m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos), assembled;
-// highest: the largest m. With BLOCKERS each m is kept in texel_horizon for the spheres'
-// horizon tests (sphere_blockers.glsl), so none is recomputed.
-#if BLOCKERS
-float texel_horizon[AZIMUTHS];
-#endif
+// highest: the largest m.
 void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float highest) {
   float fc[SH_ORDER * NLP_ORDER], fs[SH_ORDER * NLP_ORDER];
   for (int r = 0; r < SH_ORDER * NLP_ORDER; ++r) fc[r] = fs[r] = 0.0;
@@ -268,9 +264,6 @@ void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float
   for (int k = 0; k < AZIMUTHS; ++k) {
     float m = flooredSlope(k, j, i, n);
     highest = max(highest, m);
-#if BLOCKERS
-    texel_horizon[k] = m;
-#endif
     float c2 = 1.0 / (1.0 + m * m);
     float v[NLP_ORDER];
 #if SHADING_MODE == MODE_LOG_BRDF
@@ -286,7 +279,13 @@ void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float
 
 #if BLOCKERS
 #include "sphere_blockers.glsl"
-float flooredHorizonSlope(int k) { return texel_horizon[k]; }
+// Each read recomputes the slope (or reads the kept one): a per-texel array of them,
+// read at dynamic indices, made ten airliners 8x slower on llvmpipe.
+#if VIS_CACHE == 2
+float flooredHorizonSlope(int k, int j, int i, vec3 n) { return kept_horizon[keptIndex(k, j * grid_width + i)]; }
+#else
+float flooredHorizonSlope(int k, int j, int i, vec3 n) { return flooredSlope(k, j, i, n); }
+#endif
 
 // The sphere blockers' f_S applied to the terrain's visibility vis (log-visibility in
 // MODE_LOG_BRDF): V_T * exp*(f_S) (blockers::Composition::kProduct); the log-BRDF mode
@@ -402,10 +401,7 @@ void main() {
   for (int r = 0; r < SH_COEFFS; ++r) vis[r] = kept_vis[keptIndex(r, texel)];
 #if BLOCKERS
   float highest = -1.0 / 0.0;
-  for (int k = 0; k < AZIMUTHS; ++k) {
-    texel_horizon[k] = kept_horizon[keptIndex(k, texel)];
-    highest = max(highest, texel_horizon[k]);
-  }
+  for (int k = 0; k < AZIMUTHS; ++k) highest = max(highest, kept_horizon[keptIndex(k, texel)]);
 #endif
 #else
   float highest;
@@ -413,7 +409,7 @@ void main() {
 #if VIS_CACHE == 1
   for (int r = 0; r < SH_COEFFS; ++r) kept_vis[keptIndex(r, texel)] = vis[r];
 #if BLOCKERS
-  for (int k = 0; k < AZIMUTHS; ++k) kept_horizon[keptIndex(k, texel)] = texel_horizon[k];
+  for (int k = 0; k < AZIMUTHS; ++k) kept_horizon[keptIndex(k, texel)] = flooredSlope(k, j, i, n);
 #endif
 #endif
 #endif

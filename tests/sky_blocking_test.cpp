@@ -87,7 +87,7 @@ TEST(ForEachCap, ANodeItMayNotMergeIsTakenAsItsMembers) {
   for_each_cap(spheres, groups, 0, glm::dvec3(0.0), 0.5, [&](const Sphere&, const Sphere&) { ++merged; });
   for_each_cap(
       spheres, groups, 0, glm::dvec3(0.0), 0.5, [&](const Sphere&, const Sphere&) { ++vetoed; },
-      [](const Sphere&) { return false; });
+      [](const SphereGroup&, const Sphere&) { return false; });
   EXPECT_EQ(merged, 1);
   EXPECT_EQ(vetoed, 16);
 }

@@ -76,8 +76,13 @@ int block_sky(std::span<const Sphere> spheres, const SphereGroups& groups, std::
     if (options.horizon_cull && horizon_side(extent, r) == HorizonSide::kBelow) return;
     kept += add_log_visibility(s, r.position, r.normal, every_cap, z, f_s) ? 1 : 0;
   };
-  const auto may_merge = [&](const Sphere& extent) {
-    return !options.horizon_cull || below_plane(extent) || horizon_side(extent, r) != HorizonSide::kAcross;
+  // Merging across the horizon keeps the hidden part of a node's cap, which costs at most
+  // its cull bound: a node within the receiver's budget merges unchecked (no horizon
+  // read; checking those too doubled ten airliners' cost on llvmpipe).
+  const double unchecked = options.blocker.cull_error;
+  const auto may_merge = [&](const SphereGroup& node, const Sphere& extent) {
+    return !options.horizon_cull || node_cull_bound(node, r.position, r.normal, order) <= unchecked ||
+           below_plane(extent) || horizon_side(extent, r) != HorizonSide::kAcross;
   };
   for (std::size_t q = 0; q < candidates.size(); ++q) {
     const std::uint32_t g = candidates[q];

@@ -35,11 +35,10 @@ struct SkyBlockingOptions {
   // merge no node across it.
   bool horizon_cull = true;
   // A node of a group's sphere tree whose bounding sphere a receiver sees within
-  // asin(merge_sin) is one cap (sphere_groups.h; 0: never). 0.04 (2.3°): ten airliners
-  // 150 m over hills changed skyview by at most 9.7e-5 against no merging under the
-  // frame-wide cull share (0.05: 1.1e-4), 5.7e-5 under the budget per receiver
-  // (tests/renderer_blockers_test.cpp); merged nodes nearer the receivers cost more
-  // error per node than whole aircraft far away.
+  // asin(merge_sin) is one cap (sphere_groups.h; 0: never), unless it lies across the
+  // receiver's horizon and its cull bound exceeds the cull budget (block_sky). Ten
+  // airliners on the 1 m bench scene, cull off, merged against every sphere alone: skyview
+  // within 3.5e-6 at 0.04, 6.9e-5 at 0.1 (docs/accuracy.md).
   double merge_sin = 0.04;
 };
 
@@ -62,7 +61,9 @@ HorizonSide horizon_side(const Sphere& s, const Receiver& r);
 // (options.blocker.cull_error; receiver_budget.h), each one cap where the receiver sees
 // it as one and it lies wholly on one side of the horizon (a node across it takes its
 // children, so no part of an aircraft hidden by the terrain darkens the sky through a
-// merged cap), else its members: writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
+// merged cap; except a node whose cull bound is within the receiver's budget, whose
+// hidden part costs at most that, merged without reading the horizon), else its
+// members: writes delta = V − V_T and log_sum = f_T + f_S (the log-BRDF
 // mode's input; f_S alone without log_t), n² entries each, and returns how many caps
 // survived the culls (0: delta and log_sum are untouched). scratch holds 3·n² doubles.
 // No allocation.

@@ -56,11 +56,11 @@ inline Sphere equivalent_sphere(const SphereGroup& g) { return {g.centre, std::s
 
 // Any node may be one cap (for_each_cap's default).
 struct AnyNode {
-  bool operator()(const Sphere&) const { return true; }
+  bool operator()(const SphereGroup&, const Sphere&) const { return true; }
 };
 
 // Calls cap(sphere, extent) for the caps a receiver at `position` takes from group g:
-// each node it sees as one and may_merge(its bound) allows (its equivalent sphere,
+// each node it sees as one and may_merge(node, its bound) allows (its equivalent sphere,
 // bounded by its bound), else the node's children, down to single spheres (sphere and
 // extent the same).
 template <class Cap, class MayMerge = AnyNode>
@@ -73,7 +73,7 @@ void for_each_cap(std::span<const Sphere> spheres, const SphereGroups& groups, s
       const Sphere& s = spheres[groups.order[node.first]];
       cap(s, s);
     } else if (const Sphere extent{node.centre, node.bound};
-               seen_as_one(node, glm::length(node.centre - position), merge_sin) && may_merge(extent)) {
+               seen_as_one(node, glm::length(node.centre - position), merge_sin) && may_merge(node, extent)) {
       cap(equivalent_sphere(node), extent);
     } else {
       ++n;  // its children

@@ -1079,6 +1079,14 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     k.vis.bind_storage(kVis);
     if (k.blockers) k.kept_horizons.bind_storage(kKeptHorizons);
   }
+  // Without a cache the spheres' horizon cull reads the row chunk's floored slopes.
+  Buffer chunk_horizons;
+  if (k.blockers && cache == Impl::kNoCache && sh_visibility(mProduct, true)) {
+    const std::size_t bytes = static_cast<std::size_t>(chunk) * w * bands * sizeof(float);
+    check_storage_size(bytes, "GPU pipeline: the floored horizons of a row chunk");
+    chunk_horizons = Buffer(bytes);
+    chunk_horizons.bind_storage(kKeptHorizons);
+  }
   if (read_cache != Impl::kReadVis) k.kept_sky.bind_storage(kKeptSky);
   if (k.blockers) k.blockers->bind(products);
   if (sweep) {

@@ -267,7 +267,7 @@ int sphereLogVisibility(int i, int j, vec3 n, float highest, out float f[SH_COEF
           ++node;  // its children
           continue;
         }
-        if (side != HORIZON_BELOW) kept += addCap(vec4(bound.xyz, sqrt(shape.x)), p, n, f) ? 1 : 0;
+        if (side != HORIZON_BELOW) kept += addCap(vec4(bound.xyz, min(sqrt(shape.x), bound.w)), p, n, f) ? 1 : 0;
       } else {
         ++node;  // its children
         continue;

@@ -88,15 +88,24 @@ uniform float sun_dni[CHANNELS];  // W/m^2 per output channel
 #endif
 
 
+int chunkIndex(int k, int j, int i) { return (k * chunk_rows + j - row_offset) * grid_width + i; }
+
 #if NEEDS_VIS && VIS_CACHE != 0
 // The visibility of every texel of the field, coefficient-major: [r * texels + texel].
 layout(std430, binding = VIS_BINDING) buffer KeptVis { float kept_vis[]; };
 uint keptIndex(int r, int texel) { return uint(r) * uint(grid_width * grid_height) + uint(texel); }
-#if BLOCKERS
-// And its AZIMUTHS floored horizon slopes (flooredSlope), band-major: the spheres'
-// horizon cull reads them in later frames instead of the horizons. A buffer of their
-// own keeps each under GL_MAX_SHADER_STORAGE_BLOCK_SIZE.
+#endif
+#if SH_VIS && BLOCKERS
+// The AZIMUTHS floored horizon slopes (flooredSlope) of each texel the spheres may reach,
+// band-major: the spheres' horizon cull reads them instead of re-running the sweep's
+// near steps (the same invocation reads its own writes: GLSL 4.50 section 4.10). With
+// VIS_CACHE the whole field's, kept for later frames (a buffer of their own keeps each
+// under GL_MAX_SHADER_STORAGE_BLOCK_SIZE); without, the row chunk's.
 layout(std430, binding = KEPT_HORIZON_BINDING) buffer KeptHorizons { float kept_horizon[]; };
+#if NEEDS_VIS && VIS_CACHE != 0
+uint horizonIndex(int k, int j, int i) { return keptIndex(k, j * grid_width + i); }
+#else
+uint horizonIndex(int k, int j, int i) { return uint(chunkIndex(k, j, i)); }
 #endif
 #endif
 #if NEEDS_VIS && LIT && SKY_CACHE != 0
@@ -104,7 +113,6 @@ layout(std430, binding = KEPT_HORIZON_BINDING) buffer KeptHorizons { float kept_
 layout(std430, binding = KEPT_SKY_BINDING) buffer KeptSky { float kept_sky[]; };
 #endif
 
-int chunkIndex(int k, int j, int i) { return (k * chunk_rows + j - row_offset) * grid_width + i; }
 
 // Raw horizon of band k at texel (i, j): its tangent (horizonSlope) and angle
 // (rawHorizon, rad); -inf: none.
@@ -256,13 +264,16 @@ float flooredSlope(int k, int j, int i, vec3 n) { return max(horizonSlope(k, j, 
 // The terrain's SH visibility (log-visibility in MODE_LOG_BRDF) at texel (i, j): the
 // slices of the visibility horizons e, taken as their tangents m (then sin e =
 // m / sqrt(1 + m^2) and cos^2 e = 1 / (1 + m^2), no atan, sin or cos), assembled;
-// highest: the largest m.
-void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float highest) {
+// highest: the largest m. keep: also store each m in kept_horizon (BLOCKERS).
+void terrainVisibility(int i, int j, vec3 n, bool keep, out float vis[SH_COEFFS], out float highest) {
   float fc[SH_ORDER * NLP_ORDER], fs[SH_ORDER * NLP_ORDER];
   for (int r = 0; r < SH_ORDER * NLP_ORDER; ++r) fc[r] = fs[r] = 0.0;
   highest = -1.0 / 0.0;
   for (int k = 0; k < AZIMUTHS; ++k) {
     float m = flooredSlope(k, j, i, n);
+#if BLOCKERS
+    if (keep) kept_horizon[horizonIndex(k, j, i)] = m;
+#endif
     highest = max(highest, m);
     float c2 = 1.0 / (1.0 + m * m);
     float v[NLP_ORDER];
@@ -279,13 +290,10 @@ void terrainVisibility(int i, int j, vec3 n, out float vis[SH_COEFFS], out float
 
 #if BLOCKERS
 #include "sphere_blockers.glsl"
-// Each read recomputes the slope (or reads the kept one): a per-texel array of them,
-// read at dynamic indices, made ten airliners 8x slower on llvmpipe.
-#if VIS_CACHE == 2
-float flooredHorizonSlope(int k, int j, int i, vec3 n) { return kept_horizon[keptIndex(k, j * grid_width + i)]; }
-#else
-float flooredHorizonSlope(int k, int j, int i, vec3 n) { return flooredSlope(k, j, i, n); }
-#endif
+// Read from memory: re-running the sweep's near steps per read made ten airliners'
+// first frame 1.3x slower on llvmpipe, and a per-texel private array of the slopes,
+// read at dynamic indices, 8x (it spills).
+float flooredHorizonSlope(int k, int j, int i, vec3 n) { return kept_horizon[horizonIndex(k, j, i)]; }
 
 // The sphere blockers' f_S applied to the terrain's visibility vis (log-visibility in
 // MODE_LOG_BRDF): V_T * exp*(f_S) (blockers::Composition::kProduct); the log-BRDF mode
@@ -371,7 +379,7 @@ void main() {
   // The change of the visibility where a sphere survives, shaded by the uniform sky's table.
   float f[SH_COEFFS], vis[SH_COEFFS], highest;
   bool binned = skyBinned(i, j);
-  if (binned) terrainVisibility(i, j, n, vis, highest);
+  if (binned) terrainVisibility(i, j, n, true, vis, highest);
   if (binned && sphereLogVisibility(i, j, n, highest, f) > 0) {
     float blocked[SH_COEFFS];
     blocked = vis;
@@ -405,12 +413,14 @@ void main() {
 #endif
 #else
   float highest;
-  terrainVisibility(i, j, n, vis, highest);
+  // Without VIS_CACHE only the texels the spheres may reach keep their slopes.
+#if BLOCKERS && VIS_CACHE == 0
+  terrainVisibility(i, j, n, skyBinned(i, j), vis, highest);
+#else
+  terrainVisibility(i, j, n, VIS_CACHE == 1, vis, highest);
+#endif
 #if VIS_CACHE == 1
   for (int r = 0; r < SH_COEFFS; ++r) kept_vis[keptIndex(r, texel)] = vis[r];
-#if BLOCKERS
-  for (int k = 0; k < AZIMUTHS; ++k) kept_horizon[keptIndex(k, texel)] = flooredSlope(k, j, i, n);
-#endif
 #endif
 #endif
 #if BLOCKERS

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -50,9 +51,10 @@ SphereGroups group_spheres(std::span<const Sphere> spheres, double span = kGroup
 // bound ≤ merge_sin · d (merge_sin 0: never).
 inline bool seen_as_one(const SphereGroup& g, double d, double merge_sin) { return g.bound <= merge_sin * d; }
 
-// A node as one sphere for the culls and the cap: at its centre, of radius √area
-// (the cap's r/d), bounded by `bound` (the tangent-plane and horizon culls).
-inline Sphere equivalent_sphere(const SphereGroup& g) { return {g.centre, std::sqrt(g.area)}; }
+// A node as one sphere for the cap: at its centre, of radius √area (the cap's r/d), but
+// no larger than its bound, which holds the members' union (overlapping members would
+// sum to more); `bound` itself serves the tangent-plane and horizon culls.
+inline Sphere equivalent_sphere(const SphereGroup& g) { return {g.centre, std::min(std::sqrt(g.area), g.bound)}; }
 
 // Any node may be one cap (for_each_cap's default).
 struct AnyNode {

@@ -291,7 +291,7 @@ void terrainVisibility(int i, int j, vec3 n, bool keep, out float vis[SH_COEFFS]
 #if BLOCKERS
 #include "sphere_blockers.glsl"
 // Read from memory: re-running the sweep's near steps per read made ten airliners'
-// first frame 1.3x slower on llvmpipe, and a per-texel private array of the slopes,
+// products stage 1.2x slower on llvmpipe, and a per-texel private array of the slopes,
 // read at dynamic indices, 8x (it spills).
 float flooredHorizonSlope(int k, int j, int i, vec3 n) { return kept_horizon[horizonIndex(k, j, i)]; }
 

@@ -113,7 +113,6 @@ uint horizonIndex(int k, int j, int i) { return uint(chunkIndex(k, j, i)); }
 layout(std430, binding = KEPT_SKY_BINDING) buffer KeptSky { float kept_sky[]; };
 #endif
 
-
 // Raw horizon of band k at texel (i, j): its tangent (horizonSlope) and angle
 // (rawHorizon, rad); -inf: none.
 #if SWEPT

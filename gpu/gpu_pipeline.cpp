@@ -65,6 +65,7 @@ enum Binding : int {
   kSweepRowDx = 18,  // and the rows' spacings in double
   kKeptHorizons = 19,  // a blocked pipeline's kept floored horizons (surface_products.comp)
   kKeptSky = 20,       // the kept sky irradiance (surface_products.comp, SKY_CACHE)
+  kSunKept = 21,       // the sun's kept horizon elevations (sun_shadow.comp, SUN_KEPT)
 };
 
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
@@ -439,22 +440,25 @@ struct GpuProductPipeline::Impl {
   int frames = 0;  // compute() calls since the visibility was last dropped
   double compile_ms = 0.0;  // kernels compiled since the last compute() began
   Buffer device_out;        // compute_on_gpu's bands
-  // sun_shadow.comp: shadow, and lit products with a sun; [1]: the sweep's variant
-  // (SUN_SWEPT). Compiled at first use.
-  std::optional<ComputeProgram> sun[2];
+  // sun_shadow.comp: shadow, and lit products with a sun, by how it finds the sun's
+  // horizon (SUN_SWEPT, SUN_KEPT). Compiled at first use.
+  enum SunVariant : int { kSunMarch, kSunSweep, kSunSweepAndKeep, kSunReadKept, kSunVariants };
+  std::optional<ComputeProgram> sun[kSunVariants];
   GlslDefines sun_defines;
   horizon::Heading sun_heading;
   std::vector<std::pair<std::string, double>> sun_uniforms;  // float uniforms, when active
-  const ComputeProgram& sun_kernel(bool swept) {
-    if (!sun[swept]) {
+  const ComputeProgram& sun_kernel(SunVariant v) {
+    if (!sun[v]) {
       GlslDefines d = sun_defines;
-      d.set("SUN_SWEPT", swept ? 1 : 0);
+      d.set("SUN_SWEPT", v == kSunMarch ? 0 : 1)
+          .set("SUN_KEPT", v == kSunSweepAndKeep ? 2 : v == kSunReadKept ? 1 : 0)
+          .set("SUN_KEPT_BINDING", Binding::kSunKept);
       const auto compile_start = Clock::now();
-      sun[swept].emplace(ComputeProgram::from_embedded("sun_shadow.comp", d));
+      sun[v].emplace(ComputeProgram::from_embedded("sun_shadow.comp", d));
       compile_ms += ms_since(compile_start);
-      set_sun(*sun[swept]);
+      set_sun(*sun[v]);
     }
-    return *sun[swept];
+    return *sun[v];
   }
   void set_sun(const ComputeProgram& p) const {
     for (const auto& [name, value] : sun_uniforms)
@@ -497,8 +501,10 @@ struct GpuProductPipeline::Impl {
     const bool reuse_far = swept && sun_far_valid && sun_far_field_id == f.id.value() && sun_far_revision == f.revision &&
                            horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance;
     if (far_reused) *far_reused = reuse_far;
+    SunVariant variant = swept ? kSunSweep : kSunMarch;
     if (reuse_far) {
       far = &sweep_textures.sun_far;
+      variant = kSunReadKept;
     } else if (swept) {
       GpuTimer timer;
       {
@@ -510,11 +516,24 @@ struct GpuProductPipeline::Impl {
       sun_far_field_id = f.id.value();
       sun_far_revision = f.revision;
       sun_far_heading = sun_heading;
+      if (sun_far_valid) {
+        const std::size_t bytes = f.size() * sizeof(float);
+        check_storage_size(bytes, "GPU pipeline: the sun's kept horizon");
+        if (sun_kept.size_bytes() != bytes) {
+          sun_kept = Buffer();
+          sun_kept = Buffer(bytes);
+        }
+        variant = kSunSweepAndKeep;
+      }
     }
-    return sweep_ms + sun_pass(sun_kernel(swept), f, o, invocations, sun_schedule, uploaded, shadow, far);
+    if (variant == kSunSweepAndKeep || variant == kSunReadKept) sun_kept.bind_storage(Binding::kSunKept);
+    return sweep_ms + sun_pass(sun_kernel(variant), f, o, invocations, sun_schedule, uploaded, shadow, far);
   }
   // The sun's far slopes kept for later compute()s (set_sun_heading_tolerance): valid for
-  // one field revision and the heading they were swept along.
+  // one field revision and the heading they were swept along. A later frame reads each
+  // texel's whole horizon elevation along that heading from sun_kept (its near steps
+  // included: they move least with the heading, 0.05° shifts a step 1/1000 of a texel).
+  Buffer sun_kept;
   double sun_heading_tolerance = 0.0;
   bool sun_far_valid = false;
   std::uint64_t sun_far_field_id = 0, sun_far_revision = 0;
@@ -609,7 +628,7 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
     add_far_code_defines(sun);
     k.sun_defines = sun;
     k.sun_uniforms = sun_uniforms(options.lighting->sun.direction, k.sun_heading);
-    k.sun_kernel(false);  // the march's variant now; the sweep's at its first field
+    k.sun_kernel(Impl::kSunMarch);  // the march's variant now; the sweep's at its first field
     if (blocked) {
       GlslDefines d;
       d.set("LOCAL_SIZE_X", kLocalSize)
@@ -737,7 +756,7 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
     return;
   mOptions = std::move(next);
   Impl& k = *mImpl;
-  if (k.sun[0] || k.sun[1]) {
+  if (k.sun[Impl::kSunMarch]) {  // made with the pipeline when it has a sun pass
     k.sun_uniforms = sun_uniforms(lighting.sun.direction, k.sun_heading);
     for (const auto& p : k.sun)
       if (p) k.set_sun(*p);
@@ -1053,7 +1072,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
   if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
   Buffer shadow;
-  if (k.sun[0]) {
+  if (k.sun[Impl::kSunMarch]) {
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
     t.sun_ms += k.blocker_sun_stage(field);
     heights_tex.bind_sampler(kHeights);  // sun_stage bound its own views there

@@ -108,11 +108,12 @@ class GpuProductPipeline {
   // compute() recomputes the whole field as the options say. Sub-sampled horizons
   // (subsample > 1) always recompute the whole field.
   void set_refresh_budget(std::size_t texels_per_frame);
-  // Where the sun's horizon is swept (shading::sun_sweeps), keep its far slopes for later
-  // compute()s on the same field revision while the sun's heading stays within `radians`
-  // of the heading they were swept along; the sun's pass (its near steps, the disc)
-  // still runs for the frame's own sun. A far slope from k texels away then belongs to a
-  // ray up to k·radians texels off the sun's (docs/accuracy.md measures what that costs).
+  // Where the sun's horizon is swept (shading::sun_sweeps), keep each texel's horizon
+  // elevation along the sun's heading (far slopes and near steps, 4 B a texel) for later
+  // compute()s on the same field revision while the heading stays within `radians` of
+  // the one it was swept along; the disc's pass still runs for the frame's own sun. A
+  // slope from k texels away then belongs to a ray up to k·radians texels off the sun's
+  // (docs/accuracy.md measures what that costs).
   // 0, the default: every compute() sweeps, as the reference does.
   void set_sun_heading_tolerance(double radians);
   static constexpr double kMaxSunHeadingTolerance = 0.1;  // rad (5.7°)

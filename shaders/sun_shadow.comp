@@ -12,7 +12,9 @@
 // HEIGHTS_BINDING, ROW_DX_BINDING, VALID_BINDING, SCHEDULE_BINDING, SHADOW_BINDING,
 // RAY_TEXTURES (heights and row spacings as buffer textures at their bindings),
 // DISC_RADIUS (rad), SUN_SWEPT (1: SunHorizon::Swept, with NEAR_STEPS, FAR_BINDING and
-// FAR_CODE_HALF_RANGE).
+// FAR_CODE_HALF_RANGE), SUN_KEPT and SUN_KEPT_BINDING (swept only: 2 writes each valid
+// texel's horizon elevation to the kept buffer, 1 reads it there instead of sweeping:
+// the frames that keep the sun's far slopes, GpuProductPipeline::set_sun_heading_tolerance).
 // The sun comes as uniforms (below), so one compiled kernel serves every sun position
 // (drivers cache compiled kernels by source).
 #include "horizon_ray.glsl"
@@ -69,10 +71,16 @@ float bilinearRise(int i, int j, vec2 off, float h0) {
   return (1.0 - b) * top + b * bottom;
 }
 
-#if SUN_SWEPT
+#if SUN_SWEPT && SUN_KEPT == 1
+layout(std430, binding = SUN_KEPT_BINDING) readonly buffer SunKept { float kept_elevation[]; };
+float sunHorizon(int i, int j) { return kept_elevation[j * grid_width + i]; }
+#elif SUN_SWEPT
 // SunHorizon::Swept: the sun's far slopes (horizon_sweep.comp, layer 0) and the near
 // steps of horizon_near.glsl; -pi/2 (finite_elevation of -inf) when there is none.
 layout(binding = FAR_BINDING) uniform usampler2DArray far_tex;
+#if SUN_KEPT == 2
+layout(std430, binding = SUN_KEPT_BINDING) writeonly buffer SunKept { float kept_elevation[]; };
+#endif
 float sunHorizon(int i, int j) {
   float best = sweptSlope(i, j, vec2(sun_east, sun_north), decodeFarSlope(texelFetch(far_tex, ivec3(i, j, 0), 0).r));
   return isinf(best) ? -HALF_PI : clamp(atan(best), -HALF_PI, HALF_PI);
@@ -173,12 +181,20 @@ void main() {
     shadow[texel] = uintBitsToFloat(0x7fc00000u);
     return;
   }
+#if SUN_KEPT == 2
+  // Every valid texel's: a later sun may face a surface that this one is behind.
+  float horizon = sunHorizon(i, j);
+  kept_elevation[texel] = horizon;
+#endif
   vec3 tangent = tangentPlaneLine(hornNormal(i, j));
   if (tangent.z <= -1.0) {  // the whole disc is behind the surface: no march
     shadow[texel] = 0.0;
     return;
   }
-  float y = (sunHorizon(i, j) - sun_elevation) / DISC_RADIUS;
+#if SUN_KEPT != 2
+  float horizon = sunHorizon(i, j);
+#endif
+  float y = (horizon - sun_elevation) / DISC_RADIUS;
   // The unit disc wholly below the level horizon, or wholly above it and the tangent
   // line (signed distance tangent.z >= 1): most texels, and no polygon to clip.
   if (y >= 1.0) {

@@ -63,7 +63,7 @@ struct FrameTimings {
   std::size_t refreshed_texels = 0;
   // Texels whose kept visibility is still that of the field before its last edit.
   std::size_t stale_texels = 0;
-  // The sun's far slopes were those of an earlier frame (GpuRenderer::set_sun_heading_tolerance).
+  // The sun's horizon was an earlier frame's (GpuRenderer::set_sun_heading_tolerance).
   bool sun_far_reused = false;
   // The sky irradiance of the texels no sphere reaches was an earlier frame's
   // (GpuRenderer::keep_sky_irradiance).
@@ -98,8 +98,8 @@ class Renderer {
   // gpu/visibility_refresh.h); 0, the default, recomputes the whole field at the edit.
   // This default, the reference's, recomputes whole fields whatever the budget.
   virtual void set_refresh_budget(std::size_t /*texels_per_frame*/) {}
-  // Many frames a little apart in time (a replay, the viewer): keep the sun's swept far
-  // slopes while its heading stays within `radians` of the heading they were swept along
+  // Many frames a little apart in time (a replay, the viewer): keep the sun's swept
+  // horizon while its heading stays within `radians` of the heading it was swept along
   // (the GPU: GpuProductPipeline::set_sun_heading_tolerance; docs/accuracy.md, "Frame
   // reuse"). 0, the default, sweeps every frame. This default, the reference's, marches
   // the sun exactly every frame whatever the tolerance.

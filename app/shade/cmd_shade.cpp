@@ -572,7 +572,7 @@ void add_shade_command(CLI::App& root, Action& run) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str();
   cmd->add_option("--sun-tolerance", args->sun_tolerance_deg,
-                  "A --time series keeps the sun's swept far horizon while its heading moves less than this many "
+                  "A --time series keeps the sun's swept horizon while its heading moves less than this many "
                   "degrees (a replay's frames seconds apart; docs/accuracy.md \"Frame reuse\"); 0 sweeps every frame, "
                   "as a single time does")
       ->check(CLI::Range(0.0, 1.0))

@@ -805,7 +805,10 @@ void GpuProductPipeline::set_sun_heading_tolerance(double radians) {
   if (!(radians >= 0.0) || radians > kMaxSunHeadingTolerance)
     throw std::invalid_argument("sun heading tolerance must be within 0 … " + std::to_string(kMaxSunHeadingTolerance) + " rad");
   mImpl->sun_heading_tolerance = radians;
-  if (radians == 0.0) mImpl->sun_far_valid = false;
+  if (radians == 0.0) {  // nothing is kept any more: neither the slopes nor their elevations' memory
+    mImpl->sun_far_valid = false;
+    mImpl->sun_kept = Buffer();
+  }
 }
 
 void GpuProductPipeline::keep_sky_irradiance(bool keep) {

@@ -1,6 +1,6 @@
 #version 450
 // The terrain mesh: one patch of PATCH x PATCH quads per level-of-detail node
-// (view/terrain_lod.h), with a skirt ring hung below its edges so that joins between
+// (view/terrain_lod.h; one instance each), with a skirt ring hung below its edges so that joins between
 // nodes of different strides show no cracks. Vertices read the heights from a texture
 // (no vertex buffer): gl_VertexID = b * (PATCH + 3) + a over the patch with its ring.
 // Needs PATCH (view/terrain_draw.cpp).
@@ -9,19 +9,23 @@
 layout(binding = 0) uniform sampler2D heights;  // r32f, texel (i, j) at (i, j)
 uniform ivec2 field_size;
 uniform vec2 spacing;       // dx, dy (m)
-uniform ivec2 node_origin;  // texel of the patch's first vertex
-uniform int node_stride;    // texels between vertices
-uniform float skirt_m;      // how far the ring hangs below the edge
+struct Node {
+  ivec2 origin;   // texel of the patch's first vertex
+  int stride;     // texels between vertices
+  float skirt_m;  // how far the ring hangs below the edge
+};
+layout(std430, binding = 0) readonly buffer Nodes { Node nodes[]; };  // one per instance
 uniform float exaggeration;
 uniform mat4 view_proj;
 
 out vec2 texel;  // field texel coordinates (i, j), interpolated for the product lookup
 
 void main() {
+  Node node = nodes[gl_InstanceID];
   int a = gl_VertexID % (PATCH + 3), b = gl_VertexID / (PATCH + 3);
   bool ring = a == 0 || b == 0 || a == PATCH + 2 || b == PATCH + 2;
   ivec2 local = clamp(ivec2(a, b) - 1, 0, PATCH);
-  ivec2 ij = min(node_origin + local * node_stride, field_size - 1);
+  ivec2 ij = min(node.origin + local * node.stride, field_size - 1);
   float h = texelFetch(heights, ij, 0).r;
   // The field's outer vertices move out by half a texel, so the surface covers every
   // texel's whole cell (the product clamps to the edge texel there).
@@ -29,7 +33,7 @@ void main() {
                    ij.y == 0 ? -0.5 : (ij.y == field_size.y - 1 ? 0.5 : 0.0));
   vec2 t = vec2(ij) + edge;
   vec2 xy = t * vec2(spacing.x, -spacing.y);
-  float z = h * exaggeration - curvatureDrop(xy) - (ring ? skirt_m : 0.0);
+  float z = h * exaggeration - curvatureDrop(xy) - (ring ? node.skirt_m : 0.0);
   texel = t;
   gl_Position = view_proj * vec4(xy, z, 1.0);
 }

@@ -19,7 +19,10 @@ gpu::GlslDefines terrain_defines(const terrain::HeightField& field) {
   return d;
 }
 
-// Two triangles per quad of the (PATCH + 2)² grid of the patch with its skirt ring.
+// Two triangles per quad of the (PATCH + 2)² grid of the patch with its skirt ring,
+// counter-clockwise seen from above (a runs east, b south): the ground faces up and
+// each skirt faces out of its patch, so culling back faces keeps every skirt that
+// hides a crack (the one hung from the higher edge faces the viewer on the lower side).
 std::vector<std::uint32_t> patch_indices() {
   const int n = kPatchQuads + 3;  // vertices per side
   std::vector<std::uint32_t> out;
@@ -27,10 +30,16 @@ std::vector<std::uint32_t> patch_indices() {
   for (int b = 0; b + 1 < n; ++b)
     for (int a = 0; a + 1 < n; ++a) {
       const std::uint32_t v = static_cast<std::uint32_t>(b * n + a);
-      out.insert(out.end(), {v, v + 1, v + n, v + 1, v + n + 1, v + n});
+      out.insert(out.end(), {v, v + n, v + 1, v + 1, v + n, v + n + 1});
     }
   return out;
 }
+
+// One node as view_terrain.vert reads it (std430).
+struct NodeRecord {
+  std::int32_t i0, j0, stride;
+  float skirt_m;
+};
 
 }  // namespace
 
@@ -108,6 +117,17 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   };
   std::sort(nodes.begin(), nodes.end(), [&](const LodNode& a, const LodNode& b) { return distance2(a) < distance2(b); });
 
+  std::vector<NodeRecord> records;
+  records.reserve(nodes.size());
+  for (const LodNode& n : nodes)
+    // Deep enough to hide the step to a neighbour of another stride on steep ground.
+    records.push_back({n.i0, n.j0, n.stride,
+                       static_cast<float>(std::max(5.0, 2.0 * n.stride * std::max(dx_, dy_)) * style.exaggeration)});
+  if (records.empty()) return;
+  const std::size_t bytes = records.size() * sizeof(NodeRecord);
+  if (node_buffer_.size_bytes() < bytes) node_buffer_ = gpu::Buffer(bytes);
+  node_buffer_.upload(records.data(), bytes);
+
   const glm::mat4 vp(view_proj);
   program_.use();
   program_.set_mat4("view_proj", glm::value_ptr(vp));
@@ -118,15 +138,16 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);
+  node_buffer_.bind_storage(0);
+  // One draw for all nodes (llvmpipe pays per draw call); instances are drawn in order.
+  // Back faces (slopes facing away, skirts seen from inside their patch) are hidden from
+  // any eye above the terrain; culling them spares llvmpipe their binning.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
   glBindVertexArray(vao_);
-  for (const LodNode& n : nodes) {
-    program_.set("node_origin", n.i0, n.j0);
-    program_.set("node_stride", n.stride);
-    // Deep enough to hide the step to a neighbour of another stride on steep ground.
-    program_.set("skirt_m", static_cast<float>(std::max(5.0, 2.0 * n.stride * std::max(dx_, dy_)) * style.exaggeration));
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-  }
+  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(records.size()));
   glBindVertexArray(0);
+  glDisable(GL_CULL_FACE);
   gpu::throw_on_gl_error("TerrainDraw::draw");
 }
 

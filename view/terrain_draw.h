@@ -51,6 +51,7 @@ class TerrainDraw {
   gpu::Texture2D colour_map_;
   gpu::ComputeProgram colour_kernel_;
   gpu::GraphicsProgram program_;
+  gpu::Buffer node_buffer_;  // NodeRecord per drawn node
   std::uint32_t vao_ = 0, indices_ = 0;
   int index_count_ = 0;
   int width_, height_;

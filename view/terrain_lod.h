@@ -19,7 +19,7 @@
 
 namespace skylit::view {
 
-inline constexpr int kPatchQuads = 32;  // quads along a node's side
+inline constexpr int kPatchQuads = 16;  // quads along a node's side
 
 struct LodNode {
   int i0 = 0, j0 = 0;  // first texel

@@ -1,0 +1,89 @@
+// The terrain mesh seen obliquely from above: patches of several strides meet without
+// cracks, and culling back faces removes no ground. Every pixel's ray meets the ground
+// inside the field, so no pixel may keep the clear colour. llvmpipe where there is no GPU.
+#include "gpu_test_util.h"
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "gpu/gpu_renderer.h"
+#include "shading/products.h"
+#include "view/offscreen_target.h"
+#include "view/scene_view.h"
+#include "view/terrain_draw.h"
+#include "view/terrain_lod.h"
+
+namespace skylit::view {
+namespace {
+
+using TerrainDrawTest = gpu::testing::GpuTest;
+
+TEST_F(TerrainDrawTest, ObliqueGroundHasNoCracksBetweenLevels) {
+  gpu::testing::SyntheticFieldSpec spec;
+  spec.width = spec.height = 512;
+  spec.feature_size = 4000.0;
+  spec.relief = 600.0;
+  terrain::HeightField f = gpu::testing::synthetic_field(spec);
+  f.valid[static_cast<std::size_t>(spec.nodata_j) * f.width + spec.nodata_i] = 1;  // no hole to see through
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+
+  // The eye 150 m over the highest point, near the field's south edge, looking north 30°
+  // down: with a 50° field of view the shallowest ray (a top corner) still meets the
+  // lowest ground inside the field, 9 km ahead.
+  const int size = 384;
+  const double pitch = 30.0 * std::numbers::pi / 180.0, half_fov = std::tan(25.0 * std::numbers::pi / 180.0);
+  CameraPose pose;
+  pose.eye = {0.5 * (f.width - 1) * f.mean_dx(), -(f.height - 32) * f.dy, static_cast<double>(*hi) + 150.0};
+  pose.forward = {0.0, std::cos(pitch), -std::sin(pitch)};
+  pose.up = {0.0, std::sin(pitch), std::cos(pitch)};
+  const glm::dvec3 right = glm::cross(pose.forward, pose.up);
+  for (const double side : {-1.0, 1.0}) {
+    const glm::dvec3 ray = pose.forward + half_fov * (pose.up + side * right);
+    ASSERT_LT(ray.z, 0.0);
+    const glm::dvec3 hit = pose.eye + ray * ((*lo - pose.eye.z) / ray.z);
+    ASSERT_GT(hit.x, 0.0);
+    ASSERT_LT(hit.x, (f.width - 1) * f.mean_dx());
+    ASSERT_LT(hit.y, 0.0);
+    ASSERT_GT(hit.y, -(f.height - 1) * f.dy);
+  }
+  const ViewCamera camera = perspective_camera(pose, f, size, size, 1.0);
+
+  TerrainStyle style;
+  style.curvature = false;
+  LodView lod_view;
+  lod_view.view_proj = camera.proj * camera.view;
+  lod_view.eye = camera.eye;
+  lod_view.pixels_per_radian = camera.pixels_per_radian;
+  lod_view.max_error_px = style.max_error_px;
+  std::set<int> strides;
+  for (const LodNode& n : TerrainLod(f).select(lod_view)) strides.insert(n.stride);
+  ASSERT_GE(strides.size(), 3u) << "patches of several strides meet in this view";
+
+  gpu::GpuRenderer renderer;
+  renderer.set_field(f);
+  shading::ProductOptions o;
+  o.march.azimuths = 8;
+  renderer.set_options(o);
+  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+  TerrainDraw terrain(f);
+  terrain.set_colour(shaded);
+  OffscreenTarget target(size, size);
+  target.bind();
+  glEnable(GL_DEPTH_TEST);
+  glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  terrain.draw(lod_view.view_proj, camera.eye, camera.pixels_per_radian, style);
+  const std::vector<std::uint8_t> rgb = target.read_rgb();
+  int magenta = 0;
+  for (std::size_t p = 0; p < rgb.size(); p += 3) magenta += rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
+  EXPECT_EQ(magenta, 0) << "pixels where the ground has a crack or a culled face";
+}
+
+}  // namespace
+}  // namespace skylit::view

@@ -15,7 +15,8 @@
 //    across thread counts and stay meaningful when the machine is loaded. The default
 //    march (method march), W = 32 (exact: W = ExactOptions::sky_azimuths = 360).
 //  * BM_ComputeProductSweep: the same products with the horizon sweep (2 threads).
-//  * BM_SweepFarSlopes: horizon::sweep_far_slopes for one heading, one thread.
+//  * BM_SweepFarSlopes: horizon::sweep_far_slopes for one heading, on 1 or every thread
+//    (threads: 0; wall time, as UseRealTime).
 //  * BM_ComputeProductExact: the same with exact = true on a small 64² scene (the dense
 //    ground truth costs more per texel·azimuth and uses 360 azimuths), next to the
 //    default march on the same scene.
@@ -221,12 +222,14 @@ void BM_SweepFarSlopes(benchmark::State& state) {
   o.sweep_near_steps = static_cast<int>(state.range(1));
   o.sweep_lines = static_cast<int>(state.range(2));
   const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(1, 12));
-  for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, o).data());
+  const unsigned threads = static_cast<unsigned>(state.range(3));
+  for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, o, threads).data());
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
 }
 BENCHMARK(BM_SweepFarSlopes)
-    ->ArgNames({"size", "K", "lines"})
-    ->ArgsProduct({{256, 1024}, {4}, {1, 2}})
+    ->ArgNames({"size", "K", "lines", "threads"})
+    ->ArgsProduct({{256, 1024}, {4}, {1, 2}, {1, 0}})
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 // exact = true vs the default march, 64² (see the header comment).

@@ -233,6 +233,17 @@ TEST(HorizonSweep, FarSlopesEqualABruteForceOnTheOwnerLine) {
   }
 }
 
+TEST(HorizonSweep, ThreadsSplitTheLinesWithoutChangingACode) {
+  // Hundreds of lines, so every thread takes several tasks of 32 lines.
+  const HeightField f = rough_field(230, 170, 30.0, 20.0, 30.0, 3, 200.0);
+  for (double deg : kHeadings) {
+    const MarchOptions o = sweep_options(4, 2, 6.371e6);
+    const std::vector<std::uint16_t> one = sweep_far_slopes(f, heading_deg(deg), o, 1);
+    ASSERT_GT(std::count_if(one.begin(), one.end(), [](std::uint16_t q) { return q != kFarCodeNone; }), f.size() / 2);
+    for (unsigned threads : {3u, 0u}) EXPECT_EQ(sweep_far_slopes(f, heading_deg(deg), o, threads), one) << deg;
+  }
+}
+
 TEST(HorizonSweep, EqualsTheExactMarchWhereEveryTexelLiesOnALine) {
   // Cardinal headings: lines along rows or columns, on any grid. 45° on square texels:
   // lines through texel centres too (c = b ∓ a is an integer, like the lines' c).

@@ -4,10 +4,13 @@
 #include "shading/horizon/horizon_ray.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 namespace skylit::horizon {
 
@@ -148,7 +151,8 @@ void fill_line(const SweepGeometry& g, double c, LineSamples& out) {
 
 }  // namespace
 
-std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o) {
+std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o,
+                                            unsigned threads) {
   validate(o);
   if (const std::string why = sweep_inapplicable_reason(field, o); !why.empty())
     throw std::invalid_argument("sweep: " + why);
@@ -157,10 +161,9 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   const double eps = edge_epsilon_texels(field);
   const int delay = o.sweep_near_steps + 1;
   std::vector<std::uint16_t> far(field.size(), kFarCodeNone);
-  Hull hull;
-  LineSamples line_samples;
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
-  for (int line = 0; line < g.lines; ++line) {
+  // A line writes only the texels it owns, so lines run on any thread in any order.
+  auto sweep_line = [&](int line, Hull& hull, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
     fill_line(g, c, line_samples);
     const std::vector<double>&bs = line_samples.b, &ps = line_samples.p;
@@ -183,7 +186,23 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
         far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
       }
     }
-  }
+  };
+  constexpr int kLinesPerTask = 32;
+  const int tasks = (g.lines + kLinesPerTask - 1) / kLinesPerTask;
+  std::atomic<int> next{0};
+  auto worker = [&] {
+    Hull hull;
+    LineSamples line_samples;
+    for (int t; (t = next.fetch_add(1)) < tasks;)
+      for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
+        sweep_line(line, hull, line_samples);
+  };
+  const unsigned n = std::clamp<unsigned>(threads ? threads : std::thread::hardware_concurrency(), 1u,
+                                          static_cast<unsigned>(tasks));
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < n; ++k) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
   return far;
 }
 

@@ -112,9 +112,11 @@ float decode_far_slope(std::uint16_t code);
 
 // Far-field slope codes of every texel for heading u, [j·width + i]: the max over the
 // texel's owner line's samples n ≥ sweep_near_steps + 1 of (z − t²/(2R) − h₀)/t
-// (t = (n − n₀)·step_m), encode_far_slope'd (kFarCodeNone if none). Throws
+// (t = (n − n₀)·step_m), encode_far_slope'd (kFarCodeNone if none), with the lines
+// spread over `threads` (0: every core; the result does not depend on it). Throws
 // std::invalid_argument unless applicable.
-std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options);
+std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options,
+                                            unsigned threads = 1);
 
 // Raw horizon (rad) of texel (i, j): the near steps of its own ray and its far slope
 // (code from sweep_far_slopes); −∞ if the first step already leaves the grid. Equals

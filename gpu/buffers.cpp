@@ -219,6 +219,14 @@ void TextureArray::clear(std::uint16_t value) const {
   glClearTexImage(mId, 0, GL_RED_INTEGER, GL_UNSIGNED_SHORT, &value);
 }
 
+void TextureArray::upload_layer(int layer, std::span<const std::uint16_t> codes) const {
+  if (layer < 0 || layer >= mLayers || codes.size() != static_cast<std::size_t>(mWidth) * mHeight)
+    throw std::out_of_range("TextureArray::upload_layer: no such layer, or not one layer's texels");
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  glTextureSubImage3D(mId, 0, 0, 0, layer, mWidth, mHeight, 1, GL_RED_INTEGER, GL_UNSIGNED_SHORT, codes.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
 std::vector<std::uint16_t> TextureArray::download() const {
   std::vector<std::uint16_t> out(static_cast<std::size_t>(mWidth) * mHeight * mLayers);
   glPixelStorei(GL_PACK_ALIGNMENT, 2);

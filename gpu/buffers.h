@@ -114,6 +114,8 @@ class TextureArray {
   std::uint32_t id() const { return mId; }
   void clear(std::uint16_t value) const;  // every texel of every layer
   std::vector<std::uint16_t> download() const;  // layer-major, row 0 first
+  // One layer's width × height codes, row 0 first (throws std::out_of_range otherwise).
+  void upload_layer(int layer, std::span<const std::uint16_t> codes) const;
   void bind_sampler(unsigned unit) const;                       // sampler2DArray at `unit`
   void bind_image(unsigned unit, bool read, bool write) const;  // image2DArray, all layers
 

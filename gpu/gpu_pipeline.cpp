@@ -200,8 +200,16 @@ struct SweepTextures {
 
 // Stage 2 with the sweep (shading/horizon/horizon_sweep.h): horizon_sweep.comp for every band's
 // lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
-void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, const horizon::MarchOptions& o,
+// Without a kernel (Impl::host_sweeps), the same lines swept on the host's cores instead,
+// layer by layer.
+void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field, const horizon::MarchOptions& o,
                 const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
+  if (!kernel) {
+    for (std::size_t k = 0; k < headings.size(); ++k)
+      far.upload_layer(static_cast<int>(k), horizon::sweep_far_slopes(field, headings[k], o, 0));
+    return;
+  }
+  const ComputeProgram& sweep = *kernel;
   std::vector<horizon::SweepGeometry> geometry;
   int max_samples = 1;
   const bool curved = !horizon::one_row_spacing(field);
@@ -266,7 +274,7 @@ void sweep_pass(const ComputeProgram& sweep, const terrain::HeightField& field, 
 // SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
 // horizon_sweep.comp on the resident heights and row spacings (one layer).
 // The resident heights and row spacings must be bound as buffer textures.
-const TextureArray& sun_far_slopes(const ComputeProgram& sweep, const terrain::HeightField& field,
+const TextureArray& sun_far_slopes(const ComputeProgram* sweep, const terrain::HeightField& field,
                                    const shading::ProductOptions& o, horizon::Heading u, SweepTextures& textures) {
   const TextureArray& far =
       SweepTextures::array(textures.sun_far, textures.sun_far_size, field.width, field.height, 1);
@@ -464,6 +472,12 @@ struct GpuProductPipeline::Impl {
     for (const auto& [name, value] : sun_uniforms)
       if (p.has_uniform(name)) p.set_uniform(name, static_cast<float>(value));
   }
+  // set_sweeps_on_host; unset: on a software rasterizer (asked at first use, in the context).
+  std::optional<bool> sweeps_on_host;
+  bool host_sweeps() {
+    if (!sweeps_on_host) sweeps_on_host = software_renderer();
+    return *sweeps_on_host;
+  }
   // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
   // steps and lines), compiled at first use.
   std::optional<ComputeProgram> sweeps[2];
@@ -509,7 +523,7 @@ struct GpuProductPipeline::Impl {
       GpuTimer timer;
       {
         ScopedGpuTimer timing(timer);
-        far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, sweep_textures);
+        far = &sun_far_slopes(host_sweeps() ? nullptr : &sweep_kernel(o, true), f, o, sun_heading, sweep_textures);
       }
       sweep_ms = timer.elapsed_ms();
       sun_far_valid = sun_heading_tolerance > 0.0;
@@ -834,6 +848,10 @@ void GpuProductPipeline::drop_visibility() {
   k.frames = 0;
 }
 
+void GpuProductPipeline::set_sweeps_on_host(bool on_host) { mImpl->sweeps_on_host = on_host; }
+
+bool GpuProductPipeline::sweeps_on_host() const { return mImpl->host_sweeps(); }
+
 std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
   const Impl& k = *mImpl;
   if (!k.last_compute_swept) return {};
@@ -1117,7 +1135,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     GpuTimer sweep_timer;
     {
       ScopedGpuTimer timing(sweep_timer);
-      sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
+      sweep_pass(k.host_sweeps() ? nullptr : &k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings,
+                 far, k.sweep_textures);
     }
     t.march_ms += sweep_timer.elapsed_ms();
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute

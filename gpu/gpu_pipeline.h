@@ -123,6 +123,13 @@ class GpuProductPipeline {
   // texels a sphere's sky bin reaches are shaded whole, and the sun term is every
   // frame's own, so the frames equal those without keeping bit for bit. Off by default.
   void keep_sky_irradiance(bool keep);
+  // Where the far slopes are swept (the sky's headings and the sun's): on the host's cores
+  // (horizon::sweep_far_slopes, in double, its codes uploaded) or by horizon_sweep.comp.
+  // The default is the host on a software rasterizer (llvmpipe runs the GLSL sweep on
+  // the same cores, ~4× slower), the kernel on a GPU. Either gives the same codes up to
+  // one code where float and double round a slope differently.
+  void set_sweeps_on_host(bool on_host);
+  bool sweeps_on_host() const;
   // The texels next to an edit whose normals and kernels read it.
   static constexpr int kRefreshMarginTexels = horizon::kKernelMarginTexels;
 

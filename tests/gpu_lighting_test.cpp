@@ -199,22 +199,29 @@ TEST_F(GpuLightingTest, IrradianceAndLitShadedMatchReference) {
 
 // The sweep (shading::SunHorizon::Swept for the sun, the sky's sweep for the sky) on the
 // projected synthetic field and (where ../shared is present) a geographic crop, whose
-// rhumb-line sweep both run.
+// rhumb-line sweep both run: by the GLSL kernel and on the host (a software
+// rasterizer's default).
 TEST_F(GpuLightingTest, SweptSunAndSkyMatchReference) {
   const Fields f;
-  for (double elevation : {10.0, 45.0}) {
-    ProductOptions o = lit_options(135.0, elevation, "uniform");
-    o.march.method = horizon::HorizonMethod::Sweep;
-    ASSERT_TRUE(shading::sun_sweeps(f.synthetic, shading::sun_shadow_options(o)));
-    const std::string label = "swept, sun 135/" + std::to_string(static_cast<int>(elevation));
-    const ProductBands g = expect_lit_matches(Product::Shadow, o, f.synthetic, f.dem_or_null(), label);
-    if (elevation == 10.0) {
-      const auto [lo, hi] = std::minmax_element(g.data.begin(), g.data.begin() + 1000);
-      EXPECT_EQ(*lo, 0.0f);
-      EXPECT_EQ(*hi, 1.0f);
+  for (const bool on_host : {false, true})
+    for (double elevation : {10.0, 45.0}) {
+      ProductOptions o = lit_options(135.0, elevation, "uniform");
+      o.march.method = horizon::HorizonMethod::Sweep;
+      ASSERT_TRUE(shading::sun_sweeps(f.synthetic, shading::sun_shadow_options(o)));
+      const std::string label = std::string(on_host ? "host-swept" : "kernel-swept") + ", sun 135/" +
+                                std::to_string(static_cast<int>(elevation));
+      GpuProductPipeline shadow(Product::Shadow, o), shaded(Product::Shaded, o);
+      shadow.set_sweeps_on_host(on_host);
+      shaded.set_sweeps_on_host(on_host);
+      const ProductBands g = expect_lit_matches(shadow, f.synthetic, "synthetic " + label);
+      if (f.have_dem) expect_lit_matches(shadow, f.dem, "cascades crop " + label);
+      if (elevation == 10.0) {
+        const auto [lo, hi] = std::minmax_element(g.data.begin(), g.data.begin() + 1000);
+        EXPECT_EQ(*lo, 0.0f);
+        EXPECT_EQ(*hi, 1.0f);
+      }
+      expect_lit_matches(shaded, f.synthetic, "synthetic " + label);
     }
-    expect_lit_matches(Product::Shaded, o, f.synthetic, nullptr, label);
-  }
 }
 
 // Sun below the horizon: no direct light (DNI 0, no shadow pass), the twilight sky only.

@@ -233,15 +233,24 @@ TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
     ProductOptions o = default_options();
     o.march.method = horizon::HorizonMethod::Sweep;
     o.march.azimuths = w;
-    const GpuProductPipeline pipeline(Product::Svf, o);
+    GpuProductPipeline pipeline(Product::Svf, o);
+    // A software rasterizer sweeps on the host by default (the same cores, ~4× faster),
+    // which must upload the reference's codes unchanged, each to its band's layer.
+    EXPECT_EQ(pipeline.sweeps_on_host(), context->is_software());
+    pipeline.set_sweeps_on_host(true);
+    pipeline.compute(field);
+    const std::vector<std::uint16_t> host = pipeline.far_codes();
+    pipeline.set_sweeps_on_host(false);
     pipeline.compute(field);
     const std::vector<std::uint16_t> gpu = pipeline.far_codes();
     ASSERT_EQ(gpu.size(), field.size() * w);
+    ASSERT_EQ(host.size(), field.size() * w);
     std::size_t equal = 0, finite = 0;
     int worst = 0;
     for (int k = 0; k < w; ++k) {
       const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, w)),
                                                  o.march);
+      EXPECT_TRUE(std::equal(cpu.begin(), cpu.end(), host.begin() + k * field.size())) << what << " band " << k;
       for (std::size_t t = 0; t < field.size(); ++t) {
         const int g = gpu[k * field.size() + t], c = cpu[t];
         if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
@@ -269,8 +278,10 @@ TEST_F(GpuProductsTest, SweepBeyondTheTextureLimitFailsClearly) {
   HeightField wide = synthetic_scene(max_size / 2 + 2, 3, 1);  // east-west lines are too long
   ProductOptions o = default_options();
   ASSERT_TRUE(shading::uses_sweep(wide, o));
+  GpuProductPipeline kernel_sweep(Product::Svf, o);
+  kernel_sweep.set_sweeps_on_host(false);  // the host's sweep has no such limit
   try {
-    GpuProductPipeline(Product::Svf, o).compute(wide);
+    kernel_sweep.compute(wide);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << e.what();

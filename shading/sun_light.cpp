@@ -130,7 +130,8 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
   if (horizon == SunHorizon::Marched || horizon == SunHorizon::Interpolated)
     marcher = std::make_unique<horizon::HorizonMarcher>(field, options.march);
   std::vector<std::uint16_t> far;  // codes (horizon_sweep.h)
-  if (swept) far = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(sun.azimuth), options.march);
+  if (swept)
+    far = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(sun.azimuth), options.march, options.threads);
 
   std::vector<float> out(field.size(), std::numeric_limits<float>::quiet_NaN());
   auto march_at = [&](int i, int j, double x) {

@@ -53,7 +53,7 @@ struct SunShadowOptions {
   horizon::ExactMarch exact;   // Exact: step, max distance, curvature
   int exact_columns = 17;      // Exact: azimuth samples across the disc, 2…65
   double radius = sky::kSunAngularRadius;  // angular radius of the disc (rad)
-  unsigned threads = 0;        // workers over rows; 0 = hardware concurrency
+  unsigned threads = 0;        // workers over rows (and the sweep's lines); 0 = hardware concurrency
 };
 
 // Whether shadow_fraction_field sweeps the sun's horizon on `field` (Swept, and the

@@ -271,9 +271,9 @@ void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field,
   }
 }
 
-// SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading,
-// horizon_sweep.comp on the resident heights and row spacings (one layer).
-// The resident heights and row spacings must be bound as buffer textures.
+// SunHorizon::Swept (shading::sun_sweeps): the far slopes of the sun's heading (one
+// layer), by horizon_sweep.comp on the resident heights and row spacings, which must be
+// bound as buffer textures, or on the host without a kernel.
 const TextureArray& sun_far_slopes(const ComputeProgram* sweep, const terrain::HeightField& field,
                                    const shading::ProductOptions& o, horizon::Heading u, SweepTextures& textures) {
   const TextureArray& far =

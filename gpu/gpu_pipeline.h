@@ -129,7 +129,7 @@ class GpuProductPipeline {
   // the same cores, ~4× slower), the kernel on a GPU. Either gives the same codes up to
   // one code where float and double round a slope differently.
   void set_sweeps_on_host(bool on_host);
-  bool sweeps_on_host() const;
+  bool sweeps_on_host() const;  // needs the pipeline's context current
   // The texels next to an edit whose normals and kernels read it.
   static constexpr int kRefreshMarginTexels = horizon::kKernelMarginTexels;
 

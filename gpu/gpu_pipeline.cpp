@@ -200,7 +200,7 @@ struct SweepTextures {
 
 // Stage 2 with the sweep (shading/horizon/horizon_sweep.h): horizon_sweep.comp for every band's
 // lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
-// Without a kernel (Impl::host_sweeps), the same lines swept on the host's cores instead,
+// Without a kernel (Impl::sweep_kernel on the host), the same lines swept on the host's cores instead,
 // layer by layer.
 void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field, const horizon::MarchOptions& o,
                 const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
@@ -479,9 +479,10 @@ struct GpuProductPipeline::Impl {
     return *sweeps_on_host;
   }
   // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
-  // steps and lines), compiled at first use.
+  // steps and lines), compiled at first use; null where the host sweeps (sweep_pass).
   std::optional<ComputeProgram> sweeps[2];
-  const ComputeProgram& sweep_kernel(const shading::ProductOptions& o, bool sun) {
+  const ComputeProgram* sweep_kernel(const shading::ProductOptions& o, bool sun) {
+    if (host_sweeps()) return nullptr;
     if (!sweeps[sun]) {
       const horizon::MarchOptions m = sun ? shading::sun_shadow_options(o).march : o.march;
       GlslDefines d = common_defines(azimuths, o);
@@ -499,7 +500,7 @@ struct GpuProductPipeline::Impl {
       sweeps[sun].emplace(ComputeProgram::from_embedded("horizon_sweep.comp", d));
       compile_ms += ms_since(compile_start);
     }
-    return *sweeps[sun];
+    return &*sweeps[sun];
   }
   // Stage 0: the sun's shadow into `shadow`, marched or swept (shading::sun_sweeps) as
   // the reference does; returns the GPU time (ms). Needs the resident field bound.
@@ -523,7 +524,7 @@ struct GpuProductPipeline::Impl {
       GpuTimer timer;
       {
         ScopedGpuTimer timing(timer);
-        far = &sun_far_slopes(host_sweeps() ? nullptr : &sweep_kernel(o, true), f, o, sun_heading, sweep_textures);
+        far = &sun_far_slopes(sweep_kernel(o, true), f, o, sun_heading, sweep_textures);
       }
       sweep_ms = timer.elapsed_ms();
       sun_far_valid = sun_heading_tolerance > 0.0;
@@ -1135,8 +1136,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     GpuTimer sweep_timer;
     {
       ScopedGpuTimer timing(sweep_timer);
-      sweep_pass(k.host_sweeps() ? nullptr : &k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings,
-                 far, k.sweep_textures);
+      sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
     }
     t.march_ms += sweep_timer.elapsed_ms();
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute

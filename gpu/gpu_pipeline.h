@@ -126,7 +126,7 @@ class GpuProductPipeline {
   // Where the far slopes are swept (the sky's headings and the sun's): on the host's cores
   // (horizon::sweep_far_slopes, in double, its codes uploaded) or by horizon_sweep.comp.
   // The default is the host on a software rasterizer (llvmpipe runs the GLSL sweep on
-  // the same cores, ~4× slower), the kernel on a GPU. Either gives the same codes up to
+  // the same cores, ~3.5× slower), the kernel on a GPU. Either gives the same codes up to
   // one code where float and double round a slope differently.
   void set_sweeps_on_host(bool on_host);
   bool sweeps_on_host() const;  // needs the pipeline's context current

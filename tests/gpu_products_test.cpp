@@ -234,7 +234,7 @@ TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
     o.march.method = horizon::HorizonMethod::Sweep;
     o.march.azimuths = w;
     GpuProductPipeline pipeline(Product::Svf, o);
-    // A software rasterizer sweeps on the host by default (the same cores, ~4× faster),
+    // A software rasterizer sweeps on the host by default (the same cores, ~3.5× faster),
     // which must upload the reference's codes unchanged, each to its band's layer.
     EXPECT_EQ(pipeline.sweeps_on_host(), context->is_software());
     pipeline.set_sweeps_on_host(true);

@@ -448,6 +448,19 @@ struct GpuProductPipeline::Impl {
   int frames = 0;  // compute() calls since the visibility was last dropped
   double compile_ms = 0.0;  // kernels compiled since the last compute() began
   Buffer device_out;        // compute_on_gpu's bands
+  // What device_out was computed from, so that a compute_on_gpu() under the same lighting
+  // (lighting_serial, bumped by each set_lighting() that changes it) on the same field
+  // revision with the sky kept shades again only the texels a sphere reaches, the last
+  // frame's or this one's (set_partial_frames). terrain_shadow: that frame's sun shadow
+  // before the spheres' pass.
+  bool partial_frames = true;
+  std::uint64_t lighting_serial = 0;
+  struct LastFrame {
+    bool valid = false;
+    std::uint64_t field_id = 0, revision = 0, lighting = 0;
+  } last_frame;
+  Buffer terrain_shadow;
+  std::optional<std::vector<terrain::PixelRect>> changed;  // last_changed()
   // sun_shadow.comp: shadow, and lit products with a sun, by how it finds the sun's
   // horizon (SUN_SWEPT, SUN_KEPT). Compiled at first use.
   enum SunVariant : int { kSunMarch, kSunSweep, kSunSweepAndKeep, kSunReadKept, kSunVariants };
@@ -771,6 +784,7 @@ void GpuProductPipeline::set_lighting(const shading::Lighting& lighting) {
     return;
   mOptions = std::move(next);
   Impl& k = *mImpl;
+  ++k.lighting_serial;
   if (k.sun[Impl::kSunMarch]) {  // made with the pipeline when it has a sun pass
     k.sun_uniforms = sun_uniforms(lighting.sun.direction, k.sun_heading);
     for (const auto& p : k.sun)
@@ -851,6 +865,13 @@ void GpuProductPipeline::drop_visibility() {
 
 void GpuProductPipeline::set_sweeps_on_host(bool on_host) { mImpl->sweeps_on_host = on_host; }
 
+void GpuProductPipeline::set_partial_frames(bool partial) {
+  mImpl->partial_frames = partial;
+  if (!partial) mImpl->terrain_shadow = Buffer();
+}
+
+const std::optional<std::vector<terrain::PixelRect>>& GpuProductPipeline::last_changed() const { return mImpl->changed; }
+
 bool GpuProductPipeline::sweeps_on_host() const { return mImpl->host_sweeps(); }
 
 std::vector<std::uint16_t> GpuProductPipeline::far_codes() const {
@@ -885,6 +906,8 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   GpuPipelineTimings t;
   Impl& k = *mImpl;  // compute() keeps the field resident in it (single-threaded, as GL is)
   k.compile_ms = 0.0;
+  k.changed.reset();
+  const Impl::LastFrame last_frame = std::exchange(k.last_frame, {});
 
   const int w = field.width, h = field.height, bands = k.azimuths;
   const int out_bands = shading::band_count(mProduct, mOptions);
@@ -987,6 +1010,15 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     }
   }
   t.sky_reused = read_cache == Impl::kReadSky;
+  // The last frame left on the GPU, under this lighting, on this field revision, with the
+  // sky irradiance kept: only the texels a sphere reaches, then or now, can change.
+  const bool partial = on_gpu && k.partial_frames && read_cache == Impl::kReadSky && mOptions.subsample == 1 &&
+                       last_frame.valid && last_frame.field_id == field.id.value() &&
+                       last_frame.revision == field.revision && last_frame.lighting == k.lighting_serial &&
+                       k.device_out.size_bytes() == texels * out_bands * sizeof(float) &&
+                       (!k.blockers || k.terrain_shadow.size_bytes() == texels * sizeof(float));
+  t.shading_kept = partial;
+  t.sun_far_reused = partial;  // the sun's horizon kept with its whole shadow
 
   // Stage 1: the marcher's step schedule (C++) and the height pyramid, built on the GPU
   // from the resident heights (rebuilt whole on every call; its tables stay resident).
@@ -1092,10 +1124,30 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     k.gamma_tex.bind_sampler(kGammaUnit);
   }
   // Stage 0: the sun's shadow, read by the product kernel (lit products with a sun).
+  // A partial frame starts from the last frame's shadow of the terrain alone.
+  std::vector<terrain::PixelRect> last_rects;  // the last frame's spheres' reach
+  if (k.blockers && partial) {
+    last_rects = k.blockers->sun_rects();
+    last_rects.insert(last_rects.end(), k.blockers->sky_rects().begin(), k.blockers->sky_rects().end());
+  }
   if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
   Buffer shadow;
-  if (k.sun[Impl::kSunMarch]) {
+  if (k.sun[Impl::kSunMarch] && partial && k.blockers) {
+    shadow = Buffer(k.terrain_shadow.size_bytes());
+    glCopyNamedBufferSubData(k.terrain_shadow.id(), shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    shadow.bind_storage(kShadow);
+    t.sun_ms = k.blocker_sun_stage(field);
+  } else if (k.sun[Impl::kSunMarch] && !partial) {
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
+    if (k.blockers && on_gpu && k.partial_frames) {  // for the partial frames after this one
+      if (k.terrain_shadow.size_bytes() != shadow.size_bytes()) {
+        k.terrain_shadow = Buffer();
+        k.terrain_shadow = Buffer(shadow.size_bytes());
+      }
+      glCopyNamedBufferSubData(shadow.id(), k.terrain_shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    } else {
+      k.terrain_shadow = Buffer();
+    }
     t.sun_ms += k.blocker_sun_stage(field);
     heights_tex.bind_sampler(kHeights);  // sun_stage bound its own views there
     row_dx_tex.bind_sampler(kRowDx);
@@ -1260,7 +1312,16 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   for (const terrain::PixelRect& r : refresh_rects) refreshed += static_cast<std::size_t>(r.width) * r.height;
   const std::size_t work = incremental ? texels + refreshed : texels;  // the reader's pass, then the rectangles
   std::size_t done = 0;
-  for (int r0 = 0; r0 < h; r0 += chunk) {
+  if (partial) {  // the texels the last frame's spheres reached and this one's sun reaches, without spheres
+    k.changed.emplace(last_rects);
+    if (k.blockers) {
+      for (const terrain::PixelRect& r : k.blockers->sun_rects()) k.changed->push_back(r);
+      for (const terrain::PixelRect& r : *k.changed)
+        for (int r0 = r.y0; r0 < r.y1(); r0 += chunk) run_block(nullptr, products, r0, std::min(chunk, r.y1() - r0), r.x0, r.width);
+      for (const terrain::PixelRect& r : k.blockers->sky_rects()) k.changed->push_back(r);  // the sphere pass's, below
+    }
+  }
+  for (int r0 = 0; r0 < (partial ? 0 : h); r0 += chunk) {
     const int rows = std::min(chunk, h - r0);
     if (reader) run_block(nullptr, *reader, r0, rows, 0, w);
     else run_block(march, products, r0, rows, 0, w);
@@ -1313,6 +1374,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     if (!incremental) k.refresh.reset(w, h);
   }
   t.stale_texels = keep || reuse ? k.refresh.stale_texels() : 0;
+  if (on_gpu) k.last_frame = {true, field.id.value(), field.revision, k.lighting_serial};
   if (vis_product) ++k.frames;
   if (progress) progress(1.0);
   t.compile_ms = k.compile_ms;

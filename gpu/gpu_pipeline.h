@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -130,6 +131,15 @@ class GpuProductPipeline {
   // one code where float and double round a slope differently.
   void set_sweeps_on_host(bool on_host);
   bool sweeps_on_host() const;  // needs the pipeline's context current
+  // compute_on_gpu() after compute_on_gpu() on the same field revision, under the same
+  // lighting (set_lighting unchanged) and with the sky irradiance kept: the spheres alone
+  // may have moved, so only the texels their bins reach, the last frame's or this one's,
+  // are shaded again (the sun's shadow there from the last frame's terrain shadow); the
+  // rest of the bands stay. The bands equal a whole frame's bit for bit. On by default.
+  void set_partial_frames(bool partial);
+  // The texels the last compute_on_gpu() wrote, when it was such a partial frame (empty:
+  // none); nothing when it wrote every texel.
+  const std::optional<std::vector<terrain::PixelRect>>& last_changed() const;
   // The texels next to an edit whose normals and kernels read it.
   static constexpr int kRefreshMarginTexels = horizon::kKernelMarginTexels;
 

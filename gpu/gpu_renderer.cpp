@@ -116,6 +116,7 @@ GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::Product
   pipeline.set_refresh_budget(refresh_budget_);
   pipeline.set_sun_heading_tolerance(sun_heading_tolerance_);
   pipeline.keep_sky_irradiance(keep_sky_);
+  pipeline.set_partial_frames(partial_frames_);
   return pipeline;
 }
 
@@ -168,13 +169,17 @@ GpuFrame GpuRenderer::frame_on_gpu(Product product, const shading::FrameInputs& 
                                 " is computed on the host (a local product): it has no GPU buffer");
   const shading::ProductOptions options = begin_frame(product, inputs);
   const auto start = std::chrono::steady_clock::now();
+  const GpuProductPipeline* previous = last_on_gpu_;
   GpuProductPipeline& pipeline = prepare(product, options, inputs);
   const double construction_ms = timings_.compile_ms;
   const Buffer& bands = pipeline.compute_on_gpu(*field_, progress, &timings_);
   timings_.compile_ms += construction_ms;
   finish_frame(start);
+  last_on_gpu_ = &pipeline;
   const int band_count = static_cast<int>(bands.size_bytes() / (field_->size() * sizeof(float)));
-  return {bands, field_->width, field_->height, band_count, pipeline.display_scale()};
+  GpuFrame out{bands, field_->width, field_->height, band_count, pipeline.display_scale(), std::nullopt, ++on_gpu_frames_};
+  if (previous == &pipeline) out.changed = pipeline.last_changed();  // else another buffer was the last frame's
+  return out;
 }
 
 }  // namespace skylit::gpu

@@ -11,8 +11,11 @@
 #include "shading/renderer.h"
 
 #include <chrono>
+#include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace skylit::gpu {
 
@@ -23,6 +26,11 @@ struct GpuFrame {
   const Buffer& bands;
   int width = 0, height = 0, band_count = 0;
   double display_scale = 1.0;
+  // The texels that differ from the renderer's previous frame_on_gpu() (serial − 1),
+  // when that was of the same product and this one shaded only what its spheres changed
+  // (GpuProductPipeline::set_partial_frames); nothing: every texel may differ.
+  std::optional<std::vector<terrain::PixelRect>> changed;
+  std::uint64_t serial = 0;  // frame_on_gpu() calls of the renderer, this one included
 };
 
 class GpuRenderer final : public shading::Renderer {
@@ -46,6 +54,8 @@ class GpuRenderer final : public shading::Renderer {
   void set_sun_heading_tolerance(double radians) override { sun_heading_tolerance_ = radians; }
   // GpuProductPipeline::keep_sky_irradiance for every frame's pipeline (the viewer's).
   void keep_sky_irradiance(bool keep) { keep_sky_ = keep; }
+  // GpuProductPipeline::set_partial_frames for every frame's pipeline (on by default).
+  void set_partial_frames(bool partial) { partial_frames_ = partial; }
   std::optional<std::string> lacks_blockers(shading::Product product,
                                             const shading::ProductOptions& options) const override;
   std::optional<std::string> lacks(shading::Product product, const shading::ProductOptions& options) const override;
@@ -86,9 +96,12 @@ class GpuRenderer final : public shading::Renderer {
   std::size_t refresh_budget_ = 0;
   double sun_heading_tolerance_ = 0.0;
   bool keep_sky_ = false;
+  bool partial_frames_ = true;
   int frames_ = 0;
   std::deque<Entry> cache_;
   const GpuProductPipeline* last_ = nullptr;
+  const GpuProductPipeline* last_on_gpu_ = nullptr;  // whose buffer the last frame_on_gpu() returned
+  std::uint64_t on_gpu_frames_ = 0;
   shading::FrameIndependentCache outputs_;
   shading::FrameTimings timings_;
 };

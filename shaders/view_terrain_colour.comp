@@ -12,6 +12,8 @@ layout(rgba32f, binding = 0) writeonly uniform image2D colour_map;
 uniform ivec2 field_size;
 uniform int band_count;
 uniform float display_scale;  // linear value -> display value
+uniform ivec2 origin;         // the first texel of the rectangle dispatched
+uniform ivec2 extent;         // its size
 
 vec3 linear_at(ivec2 ij) {
   vec3 v;
@@ -22,7 +24,8 @@ vec3 linear_at(ivec2 ij) {
 bool valid(vec3 v) { return !any(isnan(v)); }
 
 void main() {
-  ivec2 ij = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(ivec2(gl_GlobalInvocationID.xy), extent))) return;
+  ivec2 ij = origin + ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(ij, field_size))) return;
   vec3 v = linear_at(ij);
   float alpha = 1.0;

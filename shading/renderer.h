@@ -68,6 +68,9 @@ struct FrameTimings {
   // The sky irradiance of the texels no sphere reaches was an earlier frame's
   // (GpuRenderer::keep_sky_irradiance).
   bool sky_reused = false;
+  // The sun, sky and field were the last frame's: only the texels the spheres reach, the
+  // last frame's and this one's, were shaded again (gpu::GpuProductPipeline::set_partial_frames).
+  bool shading_kept = false;
 };
 
 class Renderer {
@@ -125,10 +128,11 @@ class Renderer {
 
 // How far the sun may move before frames that reuse what depends on its position make it
 // again (the viewer's frames, and a series' unless told otherwise): the swept far slopes
-// of its heading and the viewer's sky model. At 1× replay the sun moves 0.05° in 5–20 s
-// of track time. The shadow's mean error against the exact march stays within 1.5× the
-// sweep's own, and the sky's irradiance within 1e-3 of the frame's brightest
-// (tests/gpu_frame_reuse_test.cpp, tests/view_sky_reuse_test.cpp; docs/accuracy.md).
+// of its heading, and the viewer's lighting and sky model. At 1× replay the sun moves
+// 0.05° in 5–20 s of track time. The shadow's mean error against the exact march stays
+// within 1.5× the sweep's own, the sky's irradiance within 1e-3 of the frame's
+// brightest, and a kept lighting's mean within 1e-3 of it (tests/gpu_frame_reuse_test.cpp,
+// tests/view_lighting_reuse_test.cpp; docs/accuracy.md).
 inline constexpr double kFrameSunTolerance = 0.05 * std::numbers::pi / 180.0;
 
 // The side of the largest square field renderer.fits_field takes, or nothing when it

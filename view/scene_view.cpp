@@ -110,6 +110,7 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
   t.stale_texels = renderer_.last_timings().stale_texels;
   t.sun_far_reused = frame.reuse_shading || renderer_.last_timings().sun_far_reused;
+  t.shading_kept = frame.reuse_shading || renderer_.last_timings().shading_kept;
   t.texels = field_.size();
   terrain_.sync(field_);
   t.shading_ms = lap();

@@ -46,7 +46,8 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
 CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration);
 
 // How far the sun may move before the frame's sun slopes (GpuRenderer::
-// set_sun_heading_tolerance) and sky model (SkyReuse, view/sky_reuse.h) are made again.
+// set_sun_heading_tolerance), lighting and sky model (LightingReuse, view/lighting_reuse.h)
+// are made again.
 inline constexpr double kSunTolerance = shading::kFrameSunTolerance;
 
 struct ViewFrame {
@@ -74,6 +75,8 @@ struct ViewTimings {
   // renderer's FrameTimings::stale_texels), of `texels`.
   std::size_t stale_texels = 0, texels = 0;
   bool sun_far_reused = false;  // the sun's far slopes were an earlier frame's (kSunHeadingTolerance)
+  // The lighting was the last frame's (LightingReuse): only what the aircraft change was shaded.
+  bool shading_kept = false;
 };
 
 class SceneView {

@@ -94,7 +94,26 @@ void TerrainDraw::set_colour(const gpu::GpuFrame& frame) {
   colour_kernel_.set_uniform("display_scale", static_cast<float>(frame.display_scale));
   frame.bands.bind_storage(0);
   colour_map_.bind_image(0, false, true);
-  colour_kernel_.dispatch_covering(width_, height_);
+  auto colour = [&](const terrain::PixelRect& r) {
+    colour_kernel_.set_uniform("origin", r.x0, r.y0);
+    colour_kernel_.set_uniform("extent", r.width, r.height);
+    colour_kernel_.dispatch_covering(r.width, r.height);
+  };
+  const bool same_map = colour_scale_ == frame.display_scale && colour_bands_ == frame.band_count &&
+                        colour_serial_ + 1 == frame.serial;
+  if (frame.changed && same_map) {
+    for (const terrain::PixelRect& r : *frame.changed) {
+      // A nodata texel takes a neighbour's colour: one texel around changes with it.
+      const int x0 = std::max(0, r.x0 - 1), y0 = std::max(0, r.y0 - 1);
+      const terrain::PixelRect grown{x0, y0, std::min(width_, r.x1() + 1) - x0, std::min(height_, r.y1() + 1) - y0};
+      if (!r.empty() && !grown.empty()) colour(grown);
+    }
+  } else {
+    colour({0, 0, width_, height_});
+  }
+  colour_scale_ = frame.display_scale;
+  colour_bands_ = frame.band_count;
+  colour_serial_ = frame.serial;
 }
 
 void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian,

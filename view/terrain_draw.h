@@ -38,7 +38,8 @@ class TerrainDraw {
   // The colour of the draws that follow: the frame's display values, one RGBA32F texel
   // per field texel, filtered by the fragments in one lookup (a fragment reading the float
   // bands did 12 storage loads). Once per shading frame: the tiles of a screenshot redraw
-  // the same colour.
+  // the same colour. A frame that says which texels changed (GpuFrame::changed) under
+  // the same display scale recolours only those.
   void set_colour(const gpu::GpuFrame& frame);
   // pixels_per_radian 0: orthographic (every node at full resolution). Needs set_colour().
   void draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian, const TerrainStyle& style);
@@ -58,6 +59,9 @@ class TerrainDraw {
   double dx_, dy_;
   std::uint64_t revision_ = 0, field_id_ = 0;
   std::size_t nodes_ = 0;
+  double colour_scale_ = -1.0;  // what the colour map holds: the frame's display scale, bands, serial
+  int colour_bands_ = 0;
+  std::uint64_t colour_serial_ = 0;
 };
 
 }  // namespace skylit::view

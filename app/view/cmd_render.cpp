@@ -15,7 +15,7 @@
 #include "view/camera.h"
 #include "view/offscreen_target.h"
 #include "view/scene_view.h"
-#include "view/sky_reuse.h"
+#include "view/lighting_reuse.h"
 
 #include <algorithm>
 #include <chrono>
@@ -111,7 +111,7 @@ int run_render(const RenderArgs& a) {
   shading::ProductOptions options;
   options.shaded.tone = tone_curve(a.light);
   sv::SceneView scene(renderer, field, options);
-  sv::SkyReuse sky_reuse(sv::kSunTolerance);
+  sv::LightingReuse lighting_reuse(sv::kSunTolerance);
   sv::OffscreenTarget target(width, height);
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
   if (mode) rig.set_mode(*mode);
@@ -129,7 +129,7 @@ int run_render(const RenderArgs& a) {
     shading::LightingRequest request = a.light.request;
     request.time = shading::format_instant({t});
     sv::ViewFrame frame;
-    frame.shading.lighting = sky_reuse.next(request, shading::resolve_lighting(request, place).lighting);
+    frame.shading.lighting = lighting_reuse.next(request, shading::resolve_lighting(request, place).lighting);
     if (aircraft) frame.shading.spheres = aircraft->spheres_at(t);
     frame.style.tone = options.shaded.tone;
     frame.style.exaggeration = a.exaggeration;
@@ -155,9 +155,13 @@ int run_render(const RenderArgs& a) {
     const std::vector<std::uint8_t> rgb = target.read_rgb();
     const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
     if (a.timings)
-      std::printf("frame %d: shading %.1f ms (sun's far horizon %s), sky %.1f ms, terrain %.1f ms (%zu patches), "
+      std::printf("frame %d: shading %.1f ms (%s), sky %.1f ms, terrain %.1f ms (%zu patches), "
                   "aircraft %.1f ms, read-back %.1f ms\n",
-                  k, pass.shading_ms, pass.sun_far_reused ? "kept" : "swept", pass.sky_ms, pass.terrain_ms,
+                  k, pass.shading_ms,
+                  pass.shading_kept     ? "lighting kept: the aircraft's texels only"
+                  : pass.sun_far_reused ? "sun's far horizon kept"
+                                        : "sun's far horizon swept",
+                  pass.sky_ms, pass.terrain_ms,
                   pass.terrain_nodes, pass.bodies_ms, read_ms);
     if (k > 0) {  // the first frame computes the horizons
       sum.shading_ms += pass.shading_ms;

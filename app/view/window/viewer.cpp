@@ -33,7 +33,7 @@
 #include "view/camera.h"
 #include "view/offscreen_target.h"
 #include "view/scene_view.h"
-#include "view/sky_reuse.h"
+#include "view/lighting_reuse.h"
 #include "view/timeline.h"
 #include "view/trail_draw.h"
 
@@ -125,7 +125,7 @@ class Viewer {
   std::optional<shade::TrackedAircraft> aircraft_;
   GlfwWindow window_;
   gpu::GpuRenderer renderer_;
-  sv::SkyReuse sky_reuse_{sv::kSunTolerance};
+  sv::LightingReuse lighting_reuse_{sv::kSunTolerance};
   shading::ProductOptions options_;
   std::unique_ptr<sv::SceneView> scene_;
   double exaggeration_;
@@ -367,7 +367,7 @@ sv::ViewFrame Viewer::make_frame() {
   info_.sun_azimuth_deg = lit.sun_azimuth_deg;
   info_.sun_elevation_deg = lit.sun_elevation_deg;
   sv::ViewFrame frame;
-  frame.shading.lighting = sky_reuse_.next(request, lit.lighting);
+  frame.shading.lighting = lighting_reuse_.next(request, lit.lighting);
   if (aircraft_) frame.shading.spheres = aircraft_->spheres_at(t);
   frame.style.tone = options_.shaded.tone;
   frame.style.exaggeration = exaggeration_;

@@ -1,0 +1,47 @@
+#include "view/lighting_reuse.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace skylit::view {
+namespace {
+
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+bool close(double kept, double fresh) { return std::abs(fresh - kept) <= kLightingRelativeTolerance * std::abs(kept); }
+bool close(const sky::Rgb& kept, const sky::Rgb& fresh) {
+  return close(kept.r, fresh.r) && close(kept.g, fresh.g) && close(kept.b, fresh.b);
+}
+
+}  // namespace
+
+LightingReuse::LightingReuse(double max_sun_angle_rad) : max_angle_(max_sun_angle_rad) {
+  if (!(max_sun_angle_rad >= 0.0)) throw std::invalid_argument("LightingReuse: the sun's angle must be ≥ 0");
+}
+
+shading::Lighting LightingReuse::next(const shading::LightingRequest& request, shading::Lighting fresh) {
+  // What places the sun is compared by the sun's angle instead.
+  shading::LightingRequest timeless = request;
+  timeless.time.clear();
+  timeless.sun_azimuth_deg.reset();
+  timeless.sun_elevation_deg.reset();
+  if (made_ && request_ == timeless && made_->sky && fresh.sky && made_->colour == fresh.colour &&
+      angle_between(made_->sun.direction, fresh.sun.direction) <= max_angle_) {
+    if (angle_between(last_->sun.direction, fresh.sun.direction) <= max_angle_ && close(last_->sun.dni, fresh.sun.dni) &&
+        close(last_->reference_irradiance, fresh.reference_irradiance))
+      return *last_;
+    fresh.sky = made_->sky;
+    last_ = fresh;
+    return fresh;
+  }
+  request_ = timeless;
+  made_ = fresh;
+  last_ = fresh;
+  return fresh;
+}
+
+}  // namespace skylit::view

@@ -3,6 +3,7 @@
 // the projected crops) against the exact ground truth (dense half-texel march, 360
 // azimuths) for the svf and skyview products on crops of real DEMs in shared/dem.
 // Usage: accuracy_report [stride]  (truth at every stride-th texel, default 2).
+#include "parallel/parallel_rows.h"
 #include "shading/horizon/azimuth.h"
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_sweep.h"
@@ -61,7 +62,7 @@ Truth ground_truth(const terrain::HeightField& f, int stride, int w) {
   t.svf.resize(n), t.skyview.resize(n), t.svf_w.resize(n), t.skyview_w.resize(n);
   t.horizon_deg.resize(n * w);
   const ExactMarch exact;  // curvature on, DEM extent, half-texel steps
-  parallel_rows(static_cast<int>(n), 0, [&](int k) {
+  parallel::parallel_rows(static_cast<int>(n), 0, [&](int k) {
     const int i = t.ii[k], j = t.jj[k];
     const glm::dvec3 nrm = horn_normal(f, i, j);
     for (int az : {kTruthAzimuths, w}) {

@@ -37,7 +37,7 @@
 #include "shading/blockers/sky_blocking.h"
 #include "shading/horizon/horizon_march.h"
 #include "shading/lighting.h"
-#include "shading/parallel_rows.h"
+#include "shading/progress.h"
 #include "shading/relief/gdal_hillshade.h"
 #include "shading/sh/wedge.h"
 #include "shading/shading_modes.h"

@@ -5,7 +5,7 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_march.h"
-#include "shading/parallel_rows.h"
+#include "shading/progress.h"
 #include "shading/products.h"
 #include "shading/shading_modes.h"
 #include "shading/sky_brdf_table.h"

@@ -1,5 +1,7 @@
 #include "shading/reference_renderer.h"
 
+#include "parallel/parallel_rows.h"
+
 #include "shading/blocker_frame.h"
 #include "shading/horizon/azimuth.h"
 #include "shading/horizon/horizon_subsample.h"
@@ -93,7 +95,7 @@ class HorizonSource {
   void sweep(unsigned threads, const ProgressCallback& progress) {
     if (!sweep_) return;
     far_.resize(headings_.size());
-    parallel_rows(static_cast<int>(headings_.size()), threads,
+    parallel::parallel_rows(static_cast<int>(headings_.size()), threads,
                   [&](int k) { far_[k] = horizon::sweep_far_slopes(field_, headings_[k], march_); }, progress);
   }
 
@@ -111,7 +113,7 @@ class HorizonSource {
     const std::size_t w = headings_.size();
     coarse_.assign(static_cast<std::size_t>(cols_.count()) * rows_.count() * w,
                    std::numeric_limits<double>::quiet_NaN());
-    parallel_rows(rows_.count(), threads, [&](int cj) {
+    parallel::parallel_rows(rows_.count(), threads, [&](int cj) {
       const int j = rows_.position(cj);
       for (int ci = 0; ci < cols_.count(); ++ci) {
         const int i = cols_.position(ci);
@@ -244,7 +246,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
                                      if (progress) progress(alone ? f : kSunShare * f);
                                    });
     if (blockers)
-      parallel_rows(field.height, options.threads, [&](int j) {
+      parallel::parallel_rows(field.height, options.threads, [&](int j) {
         for (int i = 0; i < field.width; ++i) {
           float& f = shadow[static_cast<std::size_t>(j) * field.width + i];
           if (f > 0.0f) f = static_cast<float>(f * blockers->sun_left(i, j, s));
@@ -313,7 +315,7 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
     sweep_share = horizons.sweeps() ? 0.5 : 0.0;
   }
 
-  parallel_rows(field.height, options.threads, [&](int j) {
+  parallel::parallel_rows(field.height, options.threads, [&](int j) {
     std::vector<double> sigma(headings.size());
     std::vector<double> scratch, vis, log_vis, delta, log_sum, block_scratch;
     if (wedge) {

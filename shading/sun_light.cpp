@@ -4,7 +4,7 @@
 #include "shading/horizon/horizon_ray.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/horizon/surface_normals.h"
-#include "shading/parallel_rows.h"
+#include "parallel/parallel_rows.h"
 #include "shading/sky/sun_disc.h"
 
 #include <algorithm>
@@ -143,7 +143,7 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
                                                          : marched_elevation(field, *marcher, i, j, u));
   };
 
-  parallel_rows(field.height, options.threads, [&](int j) {
+  parallel::parallel_rows(field.height, options.threads, [&](int j) {
     std::unique_ptr<BandHorizons> bands;
     if (options.horizon == SunHorizon::Interpolated)
       bands = std::make_unique<BandHorizons>(field, *marcher, options.march.azimuths);

@@ -23,7 +23,7 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_march.h"
-#include "shading/parallel_rows.h"
+#include "shading/progress.h"
 #include "shading/sky/atmosphere.h"
 #include "terrain/height_field.h"
 

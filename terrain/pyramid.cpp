@@ -1,5 +1,7 @@
 #include "terrain/pyramid.h"
 
+#include "parallel/parallel_rows.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -100,17 +102,17 @@ void bspline_weights(double t, double w[4]) {
   w[3] = t3 / 6.0;
 }
 
-// Runs f(a, b) over [lo, hi) split among hardware threads when the work is large.
+// Runs f(a, b) over [lo, hi) in one chunk per hardware thread when the work is large
+// enough to pay for the threads.
 template <class F>
-void parallel_rows(int lo, int hi, std::size_t work_per_row, F&& f) {
+void in_row_chunks(int lo, int hi, std::size_t work_per_row, F&& f) {
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t total = work_per_row * static_cast<std::size_t>(std::max(0, hi - lo));
   const int n = static_cast<int>(std::min<std::size_t>({hw, total / 200000 + 1, static_cast<std::size_t>(std::max(1, hi - lo))}));
   if (n <= 1) return f(lo, hi);
-  std::vector<std::thread> pool;
   const int chunk = (hi - lo + n - 1) / n;
-  for (int a = lo; a < hi; a += chunk) pool.emplace_back(f, a, std::min(hi, a + chunk));
-  for (auto& t : pool) t.join();
+  parallel::parallel_rows((hi - lo + chunk - 1) / chunk, static_cast<unsigned>(n),
+                          [&](int c) { f(lo + c * chunk, std::min(hi, lo + (c + 1) * chunk)); });
 }
 
 int level_size(int n0, double scale) { return std::max(1, static_cast<int>(std::lround(n0 / scale))); }
@@ -279,7 +281,7 @@ void HeightPyramid::compute_level(const HeightField& field, int l, const PixelRe
       }
     }
   };
-  parallel_rows(r_lo, r_hi, static_cast<std::size_t>(cols) * tx[i_lo].weight.size(), filter_rows);
+  in_row_chunks(r_lo, r_hi, static_cast<std::size_t>(cols) * tx[i_lo].weight.size(), filter_rows);
   // Pass 2: filter along y.
   for (int j = j_lo; j < j_hi; ++j) {
     const Taps& t = ty[j];

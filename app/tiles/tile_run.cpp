@@ -1,15 +1,11 @@
 #include "app/tiles/tile_run.h"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <functional>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "app/tiles/tile_image.h"
 #include "app/tiles/tile_progress.h"
+#include "parallel/parallel_rows.h"
 
 namespace skylit::app::tiles {
 namespace {
@@ -18,32 +14,6 @@ const ZoomPlan& plan_of(const std::vector<ZoomPlan>& plans, int z) {
   const auto it = std::find_if(plans.begin(), plans.end(), [z](const ZoomPlan& p) { return p.z == z; });
   if (it == plans.end()) throw std::logic_error("tiles: no plan for zoom " + std::to_string(z));
   return *it;
-}
-
-// f(0) … f(n − 1) on up to `threads` threads (0: all cores); the first exception wins.
-void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& f) {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t workers = std::min<std::size_t>(n, threads == 0 ? cores : threads);
-  if (workers <= 1) {
-    for (std::size_t k = 0; k < n; ++k) f(k);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  const auto work = [&] {
-    for (std::size_t k; (k = next++) < n;) try {
-        f(k);
-      } catch (...) {
-        const std::lock_guard lock(error_mutex);
-        if (!error) error = std::current_exception();
-      }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
 }
 
 // The halo a block's window needs: the horizons' (plan.halo) for products that search
@@ -110,7 +80,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     // Cutting and compressing the tiles (zlib: a third of a hillshade run) in parallel;
     // the archive gets them in the block's order, as a serial run would.
     std::vector<std::optional<std::string>> encoded(todo.size());
-    parallel_for(todo.size(), job.threads, [&](std::size_t k) {
+    parallel::parallel_rows(static_cast<int>(todo.size()), job.threads, [&](int k) {
       const terrain::PixelRect rect = window.tile_rect(todo[k]);
       if (!any_valid(window.field, rect)) return;
       std::vector<std::uint8_t> rgba(static_cast<std::size_t>(job.tile_size) * job.tile_size * 4);

@@ -2,14 +2,13 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_ray.h"
+#include "parallel/parallel_rows.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 namespace skylit::horizon {
@@ -187,22 +186,13 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
       }
     }
   };
-  constexpr int kLinesPerTask = 32;
-  const int tasks = (g.lines + kLinesPerTask - 1) / kLinesPerTask;
-  std::atomic<int> next{0};
-  auto worker = [&] {
+  constexpr int kLinesPerTask = 32;  // a task's hull and samples serve its lines
+  parallel::parallel_rows((g.lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
     Hull hull;
     LineSamples line_samples;
-    for (int t; (t = next.fetch_add(1)) < tasks;)
-      for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
-        sweep_line(line, hull, line_samples);
-  };
-  const unsigned n = std::clamp<unsigned>(threads ? threads : std::thread::hardware_concurrency(), 1u,
-                                          static_cast<unsigned>(tasks));
-  std::vector<std::thread> pool;
-  for (unsigned k = 1; k < n; ++k) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+    for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
+      sweep_line(line, hull, line_samples);
+  });
   return far;
 }
 

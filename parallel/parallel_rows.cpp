@@ -1,4 +1,4 @@
-#include "shading/parallel_rows.h"
+#include "parallel/parallel_rows.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace skylit::shading {
+namespace skylit::parallel {
 
 void parallel_rows(int rows, unsigned threads, const std::function<void(int)>& body,
                    const ProgressCallback& progress) {
@@ -40,4 +40,4 @@ void parallel_rows(int rows, unsigned threads, const std::function<void(int)>& b
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace skylit::shading
+}  // namespace skylit::parallel

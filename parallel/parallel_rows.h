@@ -1,10 +1,11 @@
-// Rows of a raster spread over worker threads, with progress: what the CPU reference
-// pipeline (reference_pipeline.h) and the sun's shadow field (sun_light.h) share.
+// Rows of a raster (or any numbered items) spread over worker threads, with progress:
+// the CPU reference pipeline and sun shadow, the sweep's lines, the pyramid's rows and
+// the tiles share it.
 #pragma once
 
 #include <functional>
 
-namespace skylit::shading {
+namespace skylit::parallel {
 
 // Fraction done in [0, 1]; called from worker threads, one call at a time.
 using ProgressCallback = std::function<void(double fraction)>;
@@ -15,4 +16,4 @@ using ProgressCallback = std::function<void(double fraction)>;
 void parallel_rows(int rows, unsigned threads, const std::function<void(int row)>& body,
                    const ProgressCallback& progress = {});
 
-}  // namespace skylit::shading
+}  // namespace skylit::parallel

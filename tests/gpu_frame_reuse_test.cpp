@@ -160,21 +160,8 @@ TEST_F(GpuFrameReuseTest, AtTheViewersToleranceTheShadowKeepsTheSweepsAccuracy) 
   EXPECT_GT(far.reused.mean, 1.5 * far.sweep.mean) << "a reuse over 1 deg";
 }
 
-// Gentle hills at 4 m texels and a balloon-sized sphere 25 m up: a deep sky shadow. Its
-// reach (the cull budget's, ~320 m) covers a third of the field's width.
-terrain::HeightField hills() {
-  terrain::SyntheticOptions o;
-  o.width = 256;
-  o.height = 200;
-  o.spacing = 4.0;
-  o.seed = 5;
-  o.relief = 60.0;
-  o.feature_size = 400.0;
-  return terrain::make_synthetic_terrain(o);
-}
-std::vector<blockers::Sphere> balloon_over(const terrain::HeightField& f, int i, int j) {
-  return {{{i * 4.0, -j * 4.0, f.at(i, j) + 25.0}, 10.0}};
-}
+using testing::balloon_over;
+using testing::hills;
 
 double max_of(const std::vector<float>& v) {
   double m = 0.0;

@@ -32,21 +32,8 @@ shading::Lighting sun_at(double azimuth_deg, double elevation_deg) {
   return shading::resolve_lighting(r, std::nullopt).lighting;
 }
 
-// Gentle hills at 4 m texels: a balloon 25 m up casts a deep sky shadow and, at a sun
-// 30° up, a sun shadow ~45 m beside it.
-terrain::HeightField hills() {
-  terrain::SyntheticOptions o;
-  o.width = 256;
-  o.height = 200;
-  o.spacing = 4.0;
-  o.seed = 5;
-  o.relief = 60.0;
-  o.feature_size = 400.0;
-  return terrain::make_synthetic_terrain(o);
-}
-std::vector<blockers::Sphere> balloon_over(const terrain::HeightField& f, int i, int j) {
-  return {{{i * 4.0, -j * 4.0, f.at(i, j) + 25.0}, 10.0}};
-}
+using testing::balloon_over;
+using testing::hills;
 
 bool same_bits(float a, float b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gpu/gl_context.h"
+#include "shading/blockers/sphere_blocker.h"
 #include "terrain/dem_reader.h"
 #include "terrain/height_field.h"
 #include "terrain/synthetic.h"
@@ -18,6 +19,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace skylit::gpu::testing {
 
@@ -87,6 +89,23 @@ inline bool real_dem(terrain::HeightField& out) {
   o.window = terrain::PixelRect{300, 130, 104, 88};
   out = terrain::read_dem(path, o).field;
   return true;
+}
+
+// Gentle hills at 4 m texels, and a balloon-sized sphere 25 m above texel (i, j): a deep
+// sky shadow whose reach (the cull budget's, ~320 m) covers a third of the field's width,
+// and at a 30° sun a sun shadow ~45 m beside it (the frame-reuse tests).
+inline terrain::HeightField hills() {
+  terrain::SyntheticOptions o;
+  o.width = 256;
+  o.height = 200;
+  o.spacing = 4.0;
+  o.seed = 5;
+  o.relief = 60.0;
+  o.feature_size = 400.0;
+  return terrain::make_synthetic_terrain(o);
+}
+inline std::vector<blockers::Sphere> balloon_over(const terrain::HeightField& f, int i, int j) {
+  return {{{i * 4.0, -j * 4.0, f.at(i, j) + 25.0}, 10.0}};
 }
 
 }  // namespace skylit::gpu::testing

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <numbers>
 
@@ -77,6 +78,37 @@ TEST(LightingReuse, KeepsTheLightingWhileTheSunStaysWithinTheAngleAndTheModelWhi
 
 using ViewLightingReuseTest = gpu::testing::GpuTest;
 
+// The irradiance under `own` and under `kept` (the same lighting shape), per valid texel.
+struct IrradianceChange {
+  double brightest = 0.0;  // under `own`
+  double worst = 0.0, mean = 0.0;
+  std::size_t texels = 0, over = 0;  // valid texels, and those changed by more than `bound`
+};
+IrradianceChange irradiance_change(const terrain::HeightField& f, const shading::Lighting& own,
+                                   const shading::Lighting& kept, double bound_over_brightest = 0.0,
+                                   double bound = std::numeric_limits<double>::infinity()) {
+  shading::ProductOptions o;
+  o.lighting = own;
+  gpu::GpuProductPipeline p(shading::Product::Irradiance, o);
+  const std::vector<float> a = p.compute(f).data;
+  p.set_lighting(kept);
+  const std::vector<float> b = p.compute(f).data;
+  IrradianceChange c;
+  for (float v : a)
+    if (!std::isnan(v)) c.brightest = std::max(c.brightest, static_cast<double>(v));
+  bound += bound_over_brightest * c.brightest;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    if (std::isnan(a[q])) continue;
+    const double e = std::abs(static_cast<double>(a[q]) - b[q]);
+    c.worst = std::max(c.worst, e);
+    c.mean += e;
+    c.over += e > bound ? 1 : 0;
+    ++c.texels;
+  }
+  c.mean /= static_cast<double>(c.texels);
+  return c;
+}
+
 // The sky made for a sun kSunTolerance away, against the frame's own: the irradiance
 // changes by less than 1e-3 of the frame's brightest texel, at a middle and a low sun.
 TEST_F(ViewLightingReuseTest, AKeptSkyChangesTheIrradianceByLessThanAThousandth) {
@@ -85,26 +117,11 @@ TEST_F(ViewLightingReuseTest, AKeptSkyChangesTheIrradianceByLessThanAThousandth)
     const double a0 = 140.0, a1 = a0 + azimuth_step(0.999 * kSunTolerance / kDeg, elevation);
     shading::Lighting own = resolve(request_at(a1, elevation)), kept = own;
     kept.sky = resolve(request_at(a0, elevation)).sky;
-    shading::ProductOptions o;
-    o.lighting = own;
-    gpu::GpuProductPipeline p(shading::Product::Irradiance, o);
-    const std::vector<float> a = p.compute(f).data;
-    p.set_lighting(kept);
-    const std::vector<float> b = p.compute(f).data;
-    double brightest = 0.0, worst = 0.0, mean = 0.0;
-    std::size_t n = 0;
-    for (std::size_t q = 0; q < a.size(); ++q) {
-      if (std::isnan(a[q])) continue;
-      brightest = std::max(brightest, static_cast<double>(a[q]));
-      worst = std::max(worst, std::abs(static_cast<double>(a[q]) - b[q]));
-      mean += std::abs(static_cast<double>(a[q]) - b[q]);
-      ++n;
-    }
-    mean /= static_cast<double>(n);
-    std::printf("sun at %.0f deg: kept sky against its own, mean %.3g, max %.3g W/m2 of %.4g\n", elevation, mean, worst,
-                brightest);
-    EXPECT_GT(worst, 0.0) << "the sky did change";
-    EXPECT_LT(worst, 1e-3 * brightest) << elevation;
+    const IrradianceChange c = irradiance_change(f, own, kept);
+    std::printf("sun at %.0f deg: kept sky against its own, mean %.3g, max %.3g W/m2 of %.4g\n", elevation, c.mean,
+                c.worst, c.brightest);
+    EXPECT_GT(c.worst, 0.0) << "the sky did change";
+    EXPECT_LT(c.worst, 1e-3 * c.brightest) << elevation;
   }
 }
 
@@ -123,34 +140,15 @@ TEST_F(ViewLightingReuseTest, AKeptLightingMovesEachTexelWithinTheDiscBound) {
   for (double elevation : {30.0, 6.0}) {
     const double a0 = 140.0, a1 = a0 + azimuth_step(delta / kDeg, elevation);
     const shading::Lighting own = resolve(request_at(a1, elevation)), kept = resolve(request_at(a0, elevation));
-    shading::ProductOptions o;
-    o.lighting = own;
-    gpu::GpuProductPipeline p(shading::Product::Irradiance, o);
-    const std::vector<float> a = p.compute(f).data;
-    p.set_lighting(kept);
-    const std::vector<float> b = p.compute(f).data;
-    double brightest = 0.0;
-    for (float v : a)
-      if (!std::isnan(v)) brightest = std::max(brightest, static_cast<double>(v));
-    const double dni = own.sun.dni.g, bound = dni * (4.0 * delta / (std::numbers::pi * r) + delta) +
-                                              std::abs(own.sun.dni.g - kept.sun.dni.g) + 1e-3 * brightest;
-    double worst = 0.0, mean = 0.0;
-    std::size_t n = 0, over = 0;
-    for (std::size_t q = 0; q < a.size(); ++q) {
-      if (std::isnan(a[q])) continue;
-      const double e = std::abs(static_cast<double>(a[q]) - b[q]);
-      worst = std::max(worst, e);
-      mean += e;
-      over += e > bound ? 1 : 0;
-      ++n;
-    }
-    mean /= static_cast<double>(n);
+    const double bound = own.sun.dni.g * (4.0 * delta / (std::numbers::pi * r) + delta) +
+                         std::abs(own.sun.dni.g - kept.sun.dni.g);
+    const IrradianceChange c = irradiance_change(f, own, kept, 1e-3, bound);
     std::printf("sun at %.0f deg: kept lighting against its own, mean %.3g, max %.3g W/m2 of %.4g; %zu of %zu texels "
-                "over the fixed-horizon bound %.3g\n",
-                elevation, mean, worst, brightest, over, n, bound);
-    EXPECT_GT(worst, 0.0) << "the lighting did change";
-    EXPECT_LE(over, n / 200) << elevation;
-    EXPECT_LT(mean, 1e-3 * brightest) << elevation;
+                "over the fixed-horizon bound\n",
+                elevation, c.mean, c.worst, c.brightest, c.over, c.texels);
+    EXPECT_GT(c.worst, 0.0) << "the lighting did change";
+    EXPECT_LE(c.over, c.texels / 200) << elevation;
+    EXPECT_LT(c.mean, 1e-3 * c.brightest) << elevation;
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -66,6 +68,7 @@ enum Binding : int {
   kKeptHorizons = 19,  // a blocked pipeline's kept floored horizons (surface_products.comp)
   kKeptSky = 20,       // the kept sky irradiance (surface_products.comp, SKY_CACHE)
   kSunKept = 21,       // the sun's kept horizon elevations (sun_shadow.comp, SUN_KEPT)
+  kSunList = 22,       // the texels a kept frame's sun pass shades (sun_shadow.comp, SUN_LIST)
 };
 
 // Texture units of the sphere blockers' buffer textures (sphere_blockers.glsl), apart
@@ -463,7 +466,7 @@ struct GpuProductPipeline::Impl {
   std::optional<std::vector<terrain::PixelRect>> changed;  // last_changed()
   // sun_shadow.comp: shadow, and lit products with a sun, by how it finds the sun's
   // horizon (SUN_SWEPT, SUN_KEPT). Compiled at first use.
-  enum SunVariant : int { kSunMarch, kSunSweep, kSunSweepAndKeep, kSunReadKept, kSunVariants };
+  enum SunVariant : int { kSunMarch, kSunSweep, kSunSweepAndKeep, kSunReadKept, kSunReadKeptList, kSunVariants };
   std::optional<ComputeProgram> sun[kSunVariants];
   GlslDefines sun_defines;
   horizon::Heading sun_heading;
@@ -472,8 +475,10 @@ struct GpuProductPipeline::Impl {
     if (!sun[v]) {
       GlslDefines d = sun_defines;
       d.set("SUN_SWEPT", v == kSunMarch ? 0 : 1)
-          .set("SUN_KEPT", v == kSunSweepAndKeep ? 2 : v == kSunReadKept ? 1 : 0)
-          .set("SUN_KEPT_BINDING", Binding::kSunKept);
+          .set("SUN_KEPT", v == kSunSweepAndKeep ? 2 : v == kSunReadKept || v == kSunReadKeptList ? 1 : 0)
+          .set("SUN_KEPT_BINDING", Binding::kSunKept)
+          .set("SUN_LIST", v == kSunReadKeptList ? 1 : 0)
+          .set("SUN_LIST_BINDING", Binding::kSunList);
       const auto compile_start = Clock::now();
       sun[v].emplace(ComputeProgram::from_embedded("sun_shadow.comp", d));
       compile_ms += ms_since(compile_start);
@@ -533,6 +538,16 @@ struct GpuProductPipeline::Impl {
     if (reuse_far) {
       far = &sweep_textures.sun_far;
       variant = kSunReadKept;
+      // How far the sun moved from the swept one, with slack for the kernels' float
+      // rounding of the lines' distances (~1e-7 rad; the disc's radius is 4.6e-3 rad).
+      const glm::dvec3 a = sun_far_direction, b = o.lighting->sun.direction;
+      const double moved = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) + kSunMovedSlack;
+      if (moved <= sun_list_angle && sun_list_count <= kMaxSunList) {
+        sun_kept.bind_storage(Binding::kSunKept);
+        last_sun_texels = static_cast<std::size_t>(sun_list_count);
+        return sun_list_pass(f, moved, shadow);
+      }
+      sun_kernel(kSunReadKept).set_uniform("sun_moved", static_cast<float>(moved));
     } else if (swept) {
       GpuTimer timer;
       {
@@ -544,9 +559,14 @@ struct GpuProductPipeline::Impl {
       sun_far_field_id = f.id.value();
       sun_far_revision = f.revision;
       sun_far_heading = sun_heading;
+      sun_far_direction = o.lighting->sun.direction;
+      const std::size_t bytes = 2 * f.size() * sizeof(float);  // elevations, then margins
+      if (sun_far_valid) try {
+          check_storage_size(bytes, "GPU pipeline: the sun's kept horizon");
+        } catch (const std::runtime_error&) {
+          sun_far_valid = false;  // over one storage buffer: every frame sweeps
+        }
       if (sun_far_valid) {
-        const std::size_t bytes = f.size() * sizeof(float);
-        check_storage_size(bytes, "GPU pipeline: the sun's kept horizon");
         if (sun_kept.size_bytes() != bytes) {
           sun_kept = Buffer();
           sun_kept = Buffer(bytes);
@@ -555,17 +575,64 @@ struct GpuProductPipeline::Impl {
       }
     }
     if (variant == kSunSweepAndKeep || variant == kSunReadKept) sun_kept.bind_storage(Binding::kSunKept);
-    return sweep_ms + sun_pass(sun_kernel(variant), f, o, invocations, sun_schedule, uploaded, shadow, far);
+    last_sun_texels = f.size();
+    const double pass_ms = sun_pass(sun_kernel(variant), f, o, invocations, sun_schedule, uploaded, shadow, far);
+    if (variant == kSunSweepAndKeep) keep_sun_list(f, shadow);
+    return sweep_ms + pass_ms;
+  }
+  // The texels whose certainty margin (sun_shadow.comp) is under sun_list_angle, and the
+  // swept frame's shadow: a later frame whose sun moved less than that angle from the
+  // swept one copies the shadow and shades the listed texels only (llvmpipe pays for
+  // every invocation a dispatch covers, even those that return at once).
+  static constexpr double kSunMovedSlack = 1e-5;  // rad: the kernels' float rounding of the lines' distances is ~1e-7
+  static constexpr int kMaxSunList = 65535 * kLocalSize * kLocalSize;  // one dispatch's groups
+  Buffer sun_base, sun_list;
+  int sun_list_count = 0;
+  std::size_t last_sun_texels = 0;  // FrameTimings::sun_texels of the last sun_stage
+  double sun_list_angle = 0.0;  // 0: no list
+  void keep_sun_list(const terrain::HeightField& f, const Buffer& shadow) {
+    std::vector<float> margins(f.size());
+    sun_kept.download(margins.data(), f.size() * sizeof(float), f.size() * sizeof(float));
+    sun_list_angle = 2.0 * sun_heading_tolerance;  // the heading's and some more for the elevation
+    std::vector<std::uint32_t> list;
+    for (std::size_t t = 0; t < margins.size(); ++t)
+      if (f.valid[t] && !(std::abs(margins[t]) > sun_list_angle)) list.push_back(static_cast<std::uint32_t>(t));
+    sun_list_count = static_cast<int>(std::min<std::size_t>(list.size(), kMaxSunList + std::size_t{1}));
+    if (list.empty()) list.push_back(0);  // GL wants non-empty buffers bound
+    sun_list = Buffer::from(std::span<const std::uint32_t>(list));
+    if (sun_base.size_bytes() != shadow.size_bytes()) {
+      sun_base = Buffer();
+      sun_base = Buffer(shadow.size_bytes());
+    }
+    glCopyNamedBufferSubData(shadow.id(), sun_base.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+  }
+  double sun_list_pass(const terrain::HeightField& f, double moved, Buffer& shadow) {
+    const auto start = Clock::now();
+    shadow = Buffer(sun_base.size_bytes());
+    glCopyNamedBufferSubData(sun_base.id(), shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    shadow.bind_storage(kShadow);
+    sun_list.bind_storage(Binding::kSunList);
+    const ComputeProgram& kernel = sun_kernel(kSunReadKeptList);
+    set_grid_uniforms(kernel, f);
+    kernel.set_uniform("sun_moved", static_cast<float>(moved));
+    kernel.set_uniform("list_count", sun_list_count);
+    const int groups = (sun_list_count + kLocalSize * kLocalSize - 1) / (kLocalSize * kLocalSize);
+    if (groups > 0) kernel.dispatch_covering(groups * kLocalSize, kLocalSize);  // one row of groups
+    glFinish();  // wall clock: llvmpipe's timer queries report ~0 for compute
+    return ms_since(start);
   }
   // The sun's far slopes kept for later compute()s (set_sun_heading_tolerance): valid for
   // one field revision and the heading they were swept along. A later frame reads each
   // texel's whole horizon elevation along that heading from sun_kept (its near steps
-  // included: they move least with the heading, 0.05° shifts a step 1/1000 of a texel).
+  // included: they move least with the heading, 0.05° shifts a step 1/1000 of a texel),
+  // and where the sun moved less than the texel's certainty margin (sun_shadow.comp) the
+  // swept frame's 0 or 1 without the disc's pass.
   Buffer sun_kept;
   double sun_heading_tolerance = 0.0;
   bool sun_far_valid = false;
   std::uint64_t sun_far_field_id = 0, sun_far_revision = 0;
   horizon::Heading sun_far_heading;
+  glm::dvec3 sun_far_direction{0.0, 0.0, 1.0};  // the sun they were swept for
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   std::uint64_t pyramid_field_id = 0, pyramid_revision = 0;  // the field it was built from
   // The pyramid of the resident field `f`: updated in place after one edit of the field it
@@ -837,6 +904,8 @@ void GpuProductPipeline::set_sun_heading_tolerance(double radians) {
   if (radians == 0.0) {  // nothing is kept any more: neither the slopes nor their elevations' memory
     mImpl->sun_far_valid = false;
     mImpl->sun_kept = Buffer();
+    mImpl->sun_base = Buffer();
+    mImpl->sun_list = Buffer();
   }
 }
 
@@ -930,6 +999,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
     Buffer shadow;
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
+    t.sun_texels = k.last_sun_texels;
     t.sun_ms += k.blocker_sun_stage(field);
     shading::ProductBands out{w, h, 1, {}, {std::string(shading::product_name(mProduct))}};
     if (on_gpu) {
@@ -1139,6 +1209,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     t.sun_ms = k.blocker_sun_stage(field);
   } else if (k.sun[Impl::kSunMarch] && !partial) {
     t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
+    t.sun_texels = k.last_sun_texels;
     if (k.blockers && on_gpu && k.partial_frames) {  // for the partial frames after this one
       if (k.terrain_shadow.size_bytes() != shadow.size_bytes()) {
         k.terrain_shadow = Buffer();

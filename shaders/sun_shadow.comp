@@ -15,9 +15,11 @@
 // HEIGHTS_BINDING, ROW_DX_BINDING, VALID_BINDING, SCHEDULE_BINDING, SHADOW_BINDING,
 // RAY_TEXTURES (heights and row spacings as buffer textures at their bindings),
 // DISC_RADIUS (rad), SUN_SWEPT (1: SunHorizon::Swept, with NEAR_STEPS, FAR_BINDING and
-// FAR_CODE_HALF_RANGE), SUN_KEPT and SUN_KEPT_BINDING (swept only: 2 writes each valid
-// texel's horizon elevation to the kept buffer, 1 reads it there instead of sweeping:
-// the frames that keep the sun's far slopes, GpuProductPipeline::set_sun_heading_tolerance).
+// FAR_CODE_HALF_RANGE), SUN_LIST and SUN_LIST_BINDING (1: the texels of a list, below),
+// SUN_KEPT and SUN_KEPT_BINDING (swept only: 2 writes each valid
+// texel's horizon elevation and certainty margin to the kept buffer, 1 reads them there
+// instead of sweeping: the frames that keep the sun's far slopes,
+// GpuProductPipeline::set_sun_heading_tolerance).
 // The sun comes as uniforms (below), so one compiled kernel serves every sun position
 // (drivers cache compiled kernels by source).
 #include "horizon_ray.glsl"
@@ -74,9 +76,13 @@ float bilinearRise(int i, int j, vec2 off, float h0) {
   return (1.0 - b) * top + b * bottom;
 }
 
+// The kept buffer: each texel's horizon elevation, then (second half) its certainty
+// margin: how far (rad) the sun may move from the one it was swept for before the
+// texel's result can change, signed: + lit (1), - hidden (0); 0 where it may change at once.
 #if SUN_SWEPT && SUN_KEPT == 1
 layout(std430, binding = SUN_KEPT_BINDING) readonly buffer SunKept { float kept_elevation[]; };
 float sunHorizon(int i, int j) { return kept_elevation[j * grid_width + i]; }
+uniform float sun_moved;  // angle (rad) between the swept sun and this frame's, plus rounding slack
 #elif SUN_SWEPT
 // SunHorizon::Swept: the sun's far slopes (horizon_sweep.comp, layer 0) and the near
 // steps of horizon_near.glsl; -pi/2 (finite_elevation of -inf) when there is none.
@@ -192,21 +198,36 @@ vec3 tangentPlaneLine(vec3 n) {
   return vec3(nx / len, ny / len, dist);
 }
 
-void main() {
-  int i = int(gl_GlobalInvocationID.x);
-  int j = int(gl_GlobalInvocationID.y) + row_offset;
-  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows) return;
+void shadeTexel(int i, int j) {
   int texel = j * grid_width + i;
   if (((valid_bytes[texel >> 2] >> (8 * (texel & 3))) & 0xffu) == 0u) {
     shadow[texel] = uintBitsToFloat(0x7fc00000u);
     return;
   }
+#if SUN_KEPT == 1
+  // A sun moved by less than the margin keeps the disc wholly on the same side of both
+  // lines (the horizon's level moves by the change of elevation, the tangent plane's
+  // distance by at most the angle moved, each over DISC_RADIUS): the same 0 or 1.
+  float margin = kept_elevation[grid_width * grid_height + texel];
+  if (abs(margin) > sun_moved) {
+    shadow[texel] = margin > 0.0 ? 1.0 : 0.0;
+    return;
+  }
+#endif
 #if SUN_KEPT == 2
   // Every valid texel's: a later sun may face a surface that this one is behind.
   float horizon = sunHorizon(i, j);
   kept_elevation[texel] = horizon;
 #endif
   vec3 tangent = tangentPlaneLine(hornNormal(i, j));
+#if SUN_KEPT == 2
+  {
+    float level = (horizon - sun_elevation) / DISC_RADIUS;
+    float hidden = max(level - 1.0, -1.0 - tangent.z), lit = min(-1.0 - level, tangent.z - 1.0);
+    kept_elevation[grid_width * grid_height + texel] =
+        hidden > 0.0 ? -hidden * DISC_RADIUS : (lit > 0.0 ? lit * DISC_RADIUS : 0.0);
+  }
+#endif
   if (tangent.z <= -1.0) {  // the whole disc is behind the surface: no march
     shadow[texel] = 0.0;
     return;
@@ -231,3 +252,23 @@ void main() {
   }
   shadow[texel] = discAboveLevelAndLine(y, tangent);
 }
+
+#if SUN_LIST
+// The texels of a list (SUN_KEPT 1): those whose certainty margin a sun moved this far
+// may not cover; the others keep the swept frame's 0 or 1, copied by the host.
+layout(std430, binding = SUN_LIST_BINDING) readonly buffer SunList { uint list[]; };
+uniform int list_count;
+void main() {
+  int k = int(gl_WorkGroupID.x) * (LOCAL_SIZE_X * LOCAL_SIZE_Y) + int(gl_LocalInvocationIndex);
+  if (k >= list_count) return;
+  int texel = int(list[k]);
+  shadeTexel(texel % grid_width, texel / grid_width);
+}
+#else
+void main() {
+  int i = int(gl_GlobalInvocationID.x);
+  int j = int(gl_GlobalInvocationID.y) + row_offset;
+  if (i >= grid_width || j >= grid_height || j - row_offset >= chunk_rows) return;
+  shadeTexel(i, j);
+}
+#endif

@@ -65,6 +65,9 @@ struct FrameTimings {
   std::size_t stale_texels = 0;
   // The sun's horizon was an earlier frame's (GpuRenderer::set_sun_heading_tolerance).
   bool sun_far_reused = false;
+  // Texels the sun's disc pass ran for: all, or in a frame that kept the sun's horizon
+  // only those whose result a sun moved this far may change (the rest copied).
+  std::size_t sun_texels = 0;
   // The sky irradiance of the texels no sphere reaches was an earlier frame's
   // (GpuRenderer::keep_sky_irradiance).
   bool sky_reused = false;

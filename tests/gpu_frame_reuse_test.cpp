@@ -117,6 +117,37 @@ TEST_F(GpuFrameReuseTest, ReusesWithinTheToleranceAndSweepsAgainBeyondItOrAfterA
   EXPECT_FALSE(t.sun_far_reused);
 }
 
+// A kept frame whose sun moved less than twice the tolerance from the swept one runs the
+// disc's pass only for the texels whose certainty margin that may cross, and copies the
+// swept frame's 0 or 1 elsewhere; beyond it, every texel. Moving the sun in elevation
+// alone keeps its heading, so a fresh pipeline sweeps the same far slopes: the kept
+// frame must equal it (to 1e-6: the closed form of a disc that a line just misses).
+TEST_F(GpuFrameReuseTest, AKeptFrameShadesOnlyTheTexelsItsSunMayChange) {
+  const terrain::HeightField f = testing::synthetic_field({128, 112});
+  ProductOptions o = swept_options();
+  o.lighting = sun_at(230.0, 18.0);
+  const double tolerance = shading::kFrameSunTolerance;
+  GpuProductPipeline p(Product::Shadow, o);
+  p.set_sun_heading_tolerance(tolerance);
+  GpuPipelineTimings t;
+  const std::vector<float> swept = p.compute(f, {}, &t).data;
+  EXPECT_EQ(t.sun_texels, f.size());
+  for (double moved : {0.5, 1.9, 3.0}) {  // in tolerances, upward
+    const shading::Lighting l = sun_at(230.0, 18.0 + moved * tolerance / kDeg);
+    p.set_lighting(l);
+    const std::vector<float> kept = p.compute(f, {}, &t).data;
+    EXPECT_TRUE(t.sun_far_reused) << moved;
+    if (moved < 2.0) {
+      EXPECT_GT(t.sun_texels, 0u) << moved;
+      EXPECT_LT(t.sun_texels, f.size() / 10) << moved;
+    } else {
+      EXPECT_EQ(t.sun_texels, f.size()) << moved;
+    }
+    EXPECT_GT(difference(kept, swept).max, 1e-3) << "the penumbrae moved: " << moved;
+    EXPECT_LE(difference(kept, fresh_shadow(f, l)).max, 1e-6) << moved;
+  }
+}
+
 // Shadows of the sun at azimuth a1 against the exact march: a fresh sweep's error, and that
 // of one whose far slopes were swept at a0 (reused under a tolerance of |a1 − a0|).
 struct ReuseErrors {

@@ -25,12 +25,7 @@ using shading::ProductOptions;
 
 class GpuBlockers : public testing::GpuTest {};
 
-shading::Lighting sun_at(double azimuth_deg, double elevation_deg) {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
+using testing::sun_at;
 
 terrain::HeightField hills() {
   terrain::SyntheticOptions o;

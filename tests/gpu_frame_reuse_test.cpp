@@ -34,13 +34,7 @@ using GpuFrameReuseTest = testing::GpuTest;
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-shading::Lighting sun_at(double azimuth_deg, double elevation_deg, const char* sky = nullptr) {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  if (sky) r.sky = sky;
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
+using testing::sun_at;
 
 ProductOptions swept_options() {
   ProductOptions o;

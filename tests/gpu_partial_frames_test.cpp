@@ -24,13 +24,7 @@ using shading::ProductOptions;
 
 using GpuPartialFramesTest = testing::GpuTest;
 
-shading::Lighting sun_at(double azimuth_deg, double elevation_deg) {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = "preetham";
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
+using testing::sun_at;
 
 using testing::balloon_over;
 using testing::hills;
@@ -86,7 +80,7 @@ struct Frames {
 TEST_F(GpuPartialFramesTest, AFrameUnderTheSameLightingEqualsAWholeOneAndChangesOnlyWhatTheSpheresReach) {
   terrain::HeightField f = hills();
   ProductOptions o;
-  o.lighting = sun_at(140.0, 30.0);
+  o.lighting = sun_at(140.0, 30.0, "preetham");
   o.lighting->colour = true;
   Frames frames(o);
   const auto here = balloon_over(f, 60, 50), there = balloon_over(f, 190, 150);
@@ -111,7 +105,7 @@ TEST_F(GpuPartialFramesTest, AFrameUnderTheSameLightingEqualsAWholeOneAndChanges
 
   // The sun moved (the same sky model): whole, then partial again.
   shading::Lighting moved = *o.lighting;
-  moved.sun = sun_at(140.04, 30.02).sun;
+  moved.sun = sun_at(140.04, 30.02, "preetham").sun;
   frames.frame(f, moved, there);
   EXPECT_FALSE(frames.timings.shading_kept);
   frames.frame(f, moved, here);

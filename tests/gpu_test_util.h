@@ -6,6 +6,7 @@
 
 #include "gpu/gl_context.h"
 #include "shading/blockers/sphere_blocker.h"
+#include "shading/lighting.h"
 #include "terrain/dem_reader.h"
 #include "terrain/height_field.h"
 #include "terrain/synthetic.h"
@@ -89,6 +90,15 @@ inline bool real_dem(terrain::HeightField& out) {
   o.window = terrain::PixelRect{300, 130, 104, 88};
   out = terrain::read_dem(path, o).field;
   return true;
+}
+
+// The sun at (azimuth, elevation) in degrees under `sky` (lighting.h's names).
+inline shading::Lighting sun_at(double azimuth_deg, double elevation_deg, const std::string& sky = "uniform") {
+  shading::LightingRequest r;
+  r.sun_azimuth_deg = azimuth_deg;
+  r.sun_elevation_deg = elevation_deg;
+  r.sky = sky;
+  return shading::resolve_lighting(r, std::nullopt).lighting;
 }
 
 // Gentle hills at 4 m texels, and a balloon-sized sphere 25 m above texel (i, j): a deep

@@ -69,13 +69,7 @@ TEST(VisibilityRefresh, GrowsFromTheEditByRingsUntilItHoldsTheField) {
 
 using GpuVisibilityRefreshTest = testing::GpuTest;
 
-shading::Lighting sun_at(double azimuth_deg, double elevation_deg) {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = "preetham";
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
+using testing::sun_at;
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -98,7 +92,7 @@ void check_refresh(horizon::HorizonMethod method, Product product, bool blocked)
   r.expect_frames(10);
   const std::size_t texels = f.size(), budget = texels / 5;
   r.set_refresh_budget(budget);
-  shading::FrameInputs in{sun_at(135, 30), {}, std::nullopt};
+  shading::FrameInputs in{sun_at(135, 30, "preetham"), {}, std::nullopt};
   if (blocked) in.spheres = {{{40.0 * f.mean_dx(), -30.0 * f.dy, f.at(40, 30) + 80.0}, 60.0}};
   const ProductBands before = r.frame(product, in);
   EXPECT_EQ(r.last_timings().refreshed_texels, texels);
@@ -210,7 +204,7 @@ TEST_F(GpuVisibilityRefreshTest, NoBudgetOrTwoEditsRecomputeTheWholeField) {
   r.set_field(f);
   r.set_options(o);
   r.expect_frames(10);
-  const shading::FrameInputs in{sun_at(200, 40), {}, std::nullopt};
+  const shading::FrameInputs in{sun_at(200, 40, "preetham"), {}, std::nullopt};
   r.frame(Product::Irradiance, in);
   raise(f, {10, 10, 4, 4});
   r.frame(Product::Irradiance, in);

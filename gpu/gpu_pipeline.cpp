@@ -542,6 +542,7 @@ struct GpuProductPipeline::Impl {
       // rounding of the lines' distances (~1e-7 rad; the disc's radius is 4.6e-3 rad).
       const glm::dvec3 a = sun_far_direction, b = o.lighting->sun.direction;
       const double moved = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) + kSunMovedSlack;
+      if (moved <= sun_list_angle && !sun_list_made) make_sun_list(f);
       if (moved <= sun_list_angle && sun_list_count <= kMaxSunList) {
         sun_kept.bind_storage(Binding::kSunKept);
         last_sun_texels = static_cast<std::size_t>(sun_list_count);
@@ -577,34 +578,40 @@ struct GpuProductPipeline::Impl {
     if (variant == kSunSweepAndKeep || variant == kSunReadKept) sun_kept.bind_storage(Binding::kSunKept);
     last_sun_texels = f.size();
     const double pass_ms = sun_pass(sun_kernel(variant), f, o, invocations, sun_schedule, uploaded, shadow, far);
-    if (variant == kSunSweepAndKeep) keep_sun_list(f, shadow);
+    if (variant == kSunSweepAndKeep) keep_sun_list(shadow);
     return sweep_ms + pass_ms;
   }
-  // The texels whose certainty margin (sun_shadow.comp) is under sun_list_angle, and the
-  // swept frame's shadow: a later frame whose sun moved less than that angle from the
-  // swept one copies the shadow and shades the listed texels only (llvmpipe pays for
-  // every invocation a dispatch covers, even those that return at once).
+  // The swept frame's shadow and, made at the first later frame that needs them, the
+  // texels whose certainty margin (sun_shadow.comp) is under sun_list_angle: a later
+  // frame whose sun moved less than that angle from the swept one copies the shadow and
+  // shades the listed texels only (llvmpipe pays for every invocation a dispatch covers,
+  // even those that return at once). A series whose every frame sweeps makes no list.
   static constexpr double kSunMovedSlack = 1e-5;  // rad: the kernels' float rounding of the lines' distances is ~1e-7
   static constexpr int kMaxSunList = 65535 * kLocalSize * kLocalSize;  // one dispatch's groups
   Buffer sun_base, sun_list;
   int sun_list_count = 0;
+  bool sun_list_made = false;
   std::size_t last_sun_texels = 0;  // FrameTimings::sun_texels of the last sun_stage
   double sun_list_angle = 0.0;  // 0: no list
-  void keep_sun_list(const terrain::HeightField& f, const Buffer& shadow) {
+  void keep_sun_list(const Buffer& shadow) {
+    sun_list_angle = 2.0 * sun_heading_tolerance;  // the heading's and some more for the elevation
+    sun_list_made = false;
+    if (sun_base.size_bytes() != shadow.size_bytes()) {
+      sun_base = Buffer();
+      sun_base = Buffer(shadow.size_bytes());
+    }
+    glCopyNamedBufferSubData(shadow.id(), sun_base.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+  }
+  void make_sun_list(const terrain::HeightField& f) {
     std::vector<float> margins(f.size());
     sun_kept.download(margins.data(), f.size() * sizeof(float), f.size() * sizeof(float));
-    sun_list_angle = 2.0 * sun_heading_tolerance;  // the heading's and some more for the elevation
     std::vector<std::uint32_t> list;
     for (std::size_t t = 0; t < margins.size(); ++t)
       if (f.valid[t] && !(std::abs(margins[t]) > sun_list_angle)) list.push_back(static_cast<std::uint32_t>(t));
     sun_list_count = static_cast<int>(std::min<std::size_t>(list.size(), kMaxSunList + std::size_t{1}));
     if (list.empty()) list.push_back(0);  // GL wants non-empty buffers bound
     sun_list = Buffer::from(std::span<const std::uint32_t>(list));
-    if (sun_base.size_bytes() != shadow.size_bytes()) {
-      sun_base = Buffer();
-      sun_base = Buffer(shadow.size_bytes());
-    }
-    glCopyNamedBufferSubData(shadow.id(), sun_base.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    sun_list_made = true;
   }
   double sun_list_pass(const terrain::HeightField& f, double moved, Buffer& shadow) {
     const auto start = Clock::now();

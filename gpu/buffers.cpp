@@ -98,6 +98,20 @@ void Buffer::fill_zero() {
   glClearNamedBufferData(mId, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
 }
 
+Buffer Buffer::copy() const {
+  Buffer out(mSize);
+  if (mSize) glCopyNamedBufferSubData(mId, out.mId, 0, 0, static_cast<GLsizeiptr>(mSize));
+  return out;
+}
+
+void Buffer::assign(const Buffer& from) {
+  if (mSize != from.mSize) {
+    *this = Buffer();  // the old storage goes first
+    *this = Buffer(from.mSize);
+  }
+  if (mSize) glCopyNamedBufferSubData(from.mId, mId, 0, 0, static_cast<GLsizeiptr>(mSize));
+}
+
 void Buffer::bind_storage(unsigned binding) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, mId);
 }

@@ -49,6 +49,10 @@ class Buffer {
     return out;
   }
   void fill_zero();
+  // A new buffer holding this one's bytes (copied on the GL side).
+  Buffer copy() const;
+  // This buffer's bytes become `from`'s; reallocated when the sizes differ.
+  void assign(const Buffer& from);
 
   void bind_storage(unsigned binding) const;  // layout(std430, binding = …) buffer
   // Bytes [offset, offset + bytes) as the storage block at `binding`: the block-size

@@ -5,8 +5,6 @@
 
 #include <epoxy/gl.h>
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -521,9 +519,11 @@ struct GpuProductPipeline::Impl {
     return &*sweeps[sun];
   }
   // Stage 0: the sun's shadow into `shadow`, marched or swept (shading::sun_sweeps) as
-  // the reference does; returns the GPU time (ms). Needs the resident field bound.
+  // the reference does; returns the GPU time (ms) and sets t's uploaded bytes,
+  // sun_far_reused and sun_texels. Needs the resident field bound.
   double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
-                   std::size_t& uploaded, Buffer& shadow, bool* far_reused = nullptr) {
+                   Buffer& shadow, GpuPipelineTimings& t) {
+    std::size_t& uploaded = t.uploaded_bytes;
     const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
     const TextureArray* far = nullptr;
     // The resident heights and row spacings as buffer textures, for the sweep and the pass.
@@ -533,19 +533,18 @@ struct GpuProductPipeline::Impl {
     double sweep_ms = 0.0;
     const bool reuse_far = swept && sun_far_valid && sun_far_field_id == f.id.value() && sun_far_revision == f.revision &&
                            horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance;
-    if (far_reused) *far_reused = reuse_far;
+    t.sun_far_reused = reuse_far;
     SunVariant variant = swept ? kSunSweep : kSunMarch;
     if (reuse_far) {
       far = &sweep_textures.sun_far;
       variant = kSunReadKept;
       // How far the sun moved from the swept one, with slack for the kernels' float
       // rounding of the lines' distances (~1e-7 rad; the disc's radius is 4.6e-3 rad).
-      const glm::dvec3 a = sun_far_direction, b = o.lighting->sun.direction;
-      const double moved = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) + kSunMovedSlack;
+      const double moved = sky::angle_between(sun_far_direction, o.lighting->sun.direction) + kSunMovedSlack;
       if (moved <= sun_list_angle && !sun_list_made) make_sun_list(f);
       if (moved <= sun_list_angle && sun_list_count <= kMaxSunList) {
         sun_kept.bind_storage(Binding::kSunKept);
-        last_sun_texels = static_cast<std::size_t>(sun_list_count);
+        t.sun_texels = static_cast<std::size_t>(sun_list_count);
         return sun_list_pass(f, moved, shadow);
       }
       sun_kernel(kSunReadKept).set_uniform("sun_moved", static_cast<float>(moved));
@@ -576,7 +575,7 @@ struct GpuProductPipeline::Impl {
       }
     }
     if (variant == kSunSweepAndKeep || variant == kSunReadKept) sun_kept.bind_storage(Binding::kSunKept);
-    last_sun_texels = f.size();
+    t.sun_texels = f.size();
     const double pass_ms = sun_pass(sun_kernel(variant), f, o, invocations, sun_schedule, uploaded, shadow, far);
     if (variant == kSunSweepAndKeep) keep_sun_list(shadow);
     return sweep_ms + pass_ms;
@@ -591,16 +590,11 @@ struct GpuProductPipeline::Impl {
   Buffer sun_base, sun_list;
   int sun_list_count = 0;
   bool sun_list_made = false;
-  std::size_t last_sun_texels = 0;  // FrameTimings::sun_texels of the last sun_stage
   double sun_list_angle = 0.0;  // 0: no list
   void keep_sun_list(const Buffer& shadow) {
     sun_list_angle = 2.0 * sun_heading_tolerance;  // the heading's and some more for the elevation
     sun_list_made = false;
-    if (sun_base.size_bytes() != shadow.size_bytes()) {
-      sun_base = Buffer();
-      sun_base = Buffer(shadow.size_bytes());
-    }
-    glCopyNamedBufferSubData(shadow.id(), sun_base.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    sun_base.assign(shadow);
   }
   void make_sun_list(const terrain::HeightField& f) {
     std::vector<float> margins(f.size());
@@ -615,8 +609,7 @@ struct GpuProductPipeline::Impl {
   }
   double sun_list_pass(const terrain::HeightField& f, double moved, Buffer& shadow) {
     const auto start = Clock::now();
-    shadow = Buffer(sun_base.size_bytes());
-    glCopyNamedBufferSubData(sun_base.id(), shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    shadow = sun_base.copy();
     shadow.bind_storage(kShadow);
     sun_list.bind_storage(Binding::kSunList);
     const ComputeProgram& kernel = sun_kernel(kSunReadKeptList);
@@ -1005,8 +998,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     t.upload_ms = ms_since(upload_start);
     if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
     Buffer shadow;
-    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
-    t.sun_texels = k.last_sun_texels;
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, shadow, t);
     t.sun_ms += k.blocker_sun_stage(field);
     shading::ProductBands out{w, h, 1, {}, {std::string(shading::product_name(mProduct))}};
     if (on_gpu) {
@@ -1210,19 +1202,13 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   if (k.blockers) t.uploaded_bytes += k.blockers->upload(field, k.spheres, mOptions);
   Buffer shadow;
   if (k.sun[Impl::kSunMarch] && partial && k.blockers) {
-    shadow = Buffer(k.terrain_shadow.size_bytes());
-    glCopyNamedBufferSubData(k.terrain_shadow.id(), shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+    shadow = k.terrain_shadow.copy();
     shadow.bind_storage(kShadow);
     t.sun_ms = k.blocker_sun_stage(field);
   } else if (k.sun[Impl::kSunMarch] && !partial) {
-    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, t.uploaded_bytes, shadow, &t.sun_far_reused);
-    t.sun_texels = k.last_sun_texels;
+    t.sun_ms = k.sun_stage(field, mOptions, mInvocationsPerDispatch, shadow, t);
     if (k.blockers && on_gpu && k.partial_frames) {  // for the partial frames after this one
-      if (k.terrain_shadow.size_bytes() != shadow.size_bytes()) {
-        k.terrain_shadow = Buffer();
-        k.terrain_shadow = Buffer(shadow.size_bytes());
-      }
-      glCopyNamedBufferSubData(shadow.id(), k.terrain_shadow.id(), 0, 0, static_cast<GLsizeiptr>(shadow.size_bytes()));
+      k.terrain_shadow.assign(shadow);
     } else {
       k.terrain_shadow = Buffer();
     }

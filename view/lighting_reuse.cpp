@@ -1,6 +1,6 @@
 #include "view/lighting_reuse.h"
 
-#include <glm/geometric.hpp>
+#include "shading/sky/sky_model.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,9 +8,7 @@
 namespace skylit::view {
 namespace {
 
-double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
+using sky::angle_between;
 
 bool close(double kept, double fresh) { return std::abs(fresh - kept) <= kLightingRelativeTolerance * std::abs(kept); }
 bool close(const sky::Rgb& kept, const sky::Rgb& fresh) {

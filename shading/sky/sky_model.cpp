@@ -3,6 +3,8 @@
 #include "shading/horizon/azimuth.h"
 #include "shading/sh/sh_basis.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,6 +29,10 @@ double azimuth_of(const glm::dvec3& d) {
 }
 
 double elevation_of(const glm::dvec3& d) { return std::asin(std::clamp(d.z, -1.0, 1.0)); }
+
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));  // acos loses small angles
+}
 
 double twilight_factor(double sun_elevation) {
   if (sun_elevation >= 0.0) return 1.0;

@@ -36,6 +36,8 @@ glm::dvec3 direction_from_azimuth_elevation(double azimuth, double elevation);
 // Geographic azimuth in [0, 2π) and elevation of a unit direction.
 double azimuth_of(const glm::dvec3& dir);
 double elevation_of(const glm::dvec3& dir);
+// The angle (rad, [0, π]) between two directions, accurate for small angles too.
+double angle_between(const glm::dvec3& a, const glm::dvec3& b);
 
 // Sky brightness factor for a sun below the horizon (1 for elevation ≥ 0).
 // Measured horizontal illuminance falls about 0.4 decades per degree of solar

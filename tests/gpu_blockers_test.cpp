@@ -27,16 +27,7 @@ class GpuBlockers : public testing::GpuTest {};
 
 using testing::sun_at;
 
-terrain::HeightField hills() {
-  terrain::SyntheticOptions o;
-  o.width = 72;
-  o.height = 64;
-  o.spacing = 4.0;
-  o.seed = 5;
-  o.relief = 60.0;
-  o.feature_size = 400.0;
-  return terrain::make_synthetic_terrain(o);
-}
+terrain::HeightField hills() { return testing::hills(72, 64); }
 
 // Two sets of spheres over the hills: an aircraft 40 m up (a wide soft sky shadow), and
 // a chain of overlapping spheres 25 m up whose penumbrae overlap on the sun disc (the

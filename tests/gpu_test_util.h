@@ -101,13 +101,13 @@ inline shading::Lighting sun_at(double azimuth_deg, double elevation_deg, const 
   return shading::resolve_lighting(r, std::nullopt).lighting;
 }
 
-// Gentle hills at 4 m texels, and a balloon-sized sphere 25 m above texel (i, j): a deep
+// Gentle hills at 4 m texels (256 × 200 unless told), and a balloon-sized sphere 25 m above texel (i, j): a deep
 // sky shadow whose reach (the cull budget's, ~320 m) covers a third of the field's width,
 // and at a 30° sun a sun shadow ~45 m beside it (the frame-reuse tests).
-inline terrain::HeightField hills() {
+inline terrain::HeightField hills(int width = 256, int height = 200) {
   terrain::SyntheticOptions o;
-  o.width = 256;
-  o.height = 200;
+  o.width = width;
+  o.height = height;
   o.spacing = 4.0;
   o.seed = 5;
   o.relief = 60.0;

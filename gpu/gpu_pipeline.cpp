@@ -494,6 +494,11 @@ struct GpuProductPipeline::Impl {
     if (!sweeps_on_host) sweeps_on_host = software_renderer();
     return *sweeps_on_host;
   }
+  // Whether a sweep the reference would run (uses_sweep, sun_sweeps) runs here: a bounded
+  // search needs the host's window (horizon::sweep_bounded); a GPU kernel marches it.
+  bool sweeps_here(const terrain::HeightField& f, const horizon::MarchOptions& m) {
+    return host_sweeps() || !horizon::sweep_bounded(f, m);
+  }
   // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
   // steps and lines), compiled at first use; null where the host sweeps (sweep_pass).
   std::optional<ComputeProgram> sweeps[2];
@@ -524,7 +529,8 @@ struct GpuProductPipeline::Impl {
   double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
                    Buffer& shadow, GpuPipelineTimings& t) {
     std::size_t& uploaded = t.uploaded_bytes;
-    const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
+    const bool swept =
+        shading::sun_sweeps(f, shading::sun_shadow_options(o)) && sweeps_here(f, shading::sun_shadow_options(o).march);
     const TextureArray* far = nullptr;
     // The resident heights and row spacings as buffer textures, for the sweep and the pass.
     const BufferTexture heights_tex(field.heights()), row_dx_tex(field.row_dx());
@@ -1095,7 +1101,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
   // As the reference decides; an incremental refresh marches (the sweep is not local).
-  const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions);
+  const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions) && k.sweeps_here(field, mOptions.march);
   if (!reuse) k.last_compute_swept = sweep;
   // A swept field refreshed after an edit marches: its kernels are compiled and its
   // pyramid built now, so that the edit only updates the pyramid.

@@ -269,6 +269,8 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
   HeightField& f = result.field;
   f.width = win.width;
   f.height = win.height;
+  f.origin_column = win.x0;
+  f.origin_row = win.y0;
   f.georef = read_georef(ds);
   check_north_up(name, f.georef.geotransform.data());
   auto& gt = f.georef.geotransform;

@@ -50,6 +50,9 @@ struct HeightField {
   std::vector<double> dx_per_row;    // east–west spacing (m) of each row
   std::optional<double> nodata;      // nodata value to write in outputs, if any
   GeoReference georef;
+  // Texel (0, 0)'s column and row in the raster this grid is a window of: the horizon
+  // sweep lays its lines on that raster's lattice, so that overlapping windows agree.
+  int origin_column = 0, origin_row = 0;
 
   // Change tracking: revision grows by one per mark_dirty(); last_dirty is the
   // rectangle of the most recent change (whole grid after construction/reads).

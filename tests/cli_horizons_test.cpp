@@ -77,7 +77,7 @@ TEST(CliHorizons, OneNoteSaysWhyTheMarchRunsInstead) {
   struct Case {
     std::string in, extra, why;
   };
-  for (const Case& c : {Case{polar, "", "near a pole"}, Case{utm, "--max-distance 300", "maximum distance"},
+  for (const Case& c : {Case{polar, "", "near a pole"}, Case{utm, "--max-distance 100", "near steps"},
                         Case{utm, "--subsample 2", "--subsample 2"}, Case{utm, "--exact", "exact march"}}) {
     const Shade s = shade(dir, c.in, "--horizons sweep " + c.extra);
     EXPECT_EQ(notes(s.log), 1) << c.extra << "\n" << s.log;
@@ -87,6 +87,11 @@ TEST(CliHorizons, OneNoteSaysWhyTheMarchRunsInstead) {
   }
   EXPECT_EQ(notes(shade(dir, utm, "--horizons sweep -q").log), 0);
   EXPECT_EQ(notes(shade(dir, polar, "--horizons march").log), 0);  // no sweep asked for
+  // A bounded search beyond the near steps (5 half texels, ≤ 106 m here) sweeps within it.
+  const Shade bounded = shade(dir, utm, "--horizons sweep --max-distance 300");
+  EXPECT_EQ(notes(bounded.log), 0) << bounded.log;
+  EXPECT_NE(bounded.v, shade(dir, utm, "--horizons march --max-distance 300").v);
+  EXPECT_NE(bounded.v, shade(dir, utm, "--horizons sweep").v);
   // A geographic grid at 46° N sweeps along its rhumb lines: no note, not the march.
   const std::string geo = make_dem(dir, Grid::Geographic);
   const Shade swept = shade(dir, geo, "--horizons sweep");

@@ -141,6 +141,7 @@ FarSlope brute_far_slope(const HeightField& f, int i, int j, Heading u, const Ma
   FarSlope best;
   for (int k = o.sweep_near_steps + 1; k <= 2 * std::max(f.width, f.height); ++k) {
     const double t = k * step;
+    if (o.max_distance_m > 0.0 && t > o.max_distance_m * (1.0 + 1e-12)) break;  // as the exact march stops
     GridPoint p = ray_point(f, i, j, u, t);
     (g.x_dominant ? p.y : p.x) += c_line - c_texel;
     if (!on_grid(f, p)) continue;
@@ -233,6 +234,79 @@ TEST(HorizonSweep, FarSlopesEqualABruteForceOnTheOwnerLine) {
   }
 }
 
+TEST(HorizonSweep, BoundedFarSlopesEqualABruteForceWithinTheDistance) {
+  // The field spans 1080 × 560 m: distances from a few far steps to most of its width,
+  // and one between two samples' distances (a step is 15 m along rows, 10 along columns).
+  const HeightField f = rough_field(37, 29, 30.0, 20.0, 30.0, 11, 200.0);
+  for (double d : {95.0, 137.5, 333.0, 700.0})
+    for (auto [k, lines] : {std::pair{0, 1}, {4, 2}, {3, 3}}) {
+      MarchOptions o = sweep_options(k, lines, 3e3), open = o;
+      o.max_distance_m = d;
+      ASSERT_TRUE(sweep_bounded(f, o));
+      ASSERT_TRUE(sweep_applicable(f, o)) << sweep_inapplicable_reason(f, o);
+      int cut = 0, finite = 0;
+      for (double deg : kHeadings) {
+        expect_far_slopes_match(f, heading_deg(deg), o, case_name("bounded", deg, k, lines) + " D" + std::to_string(d));
+        for (int j = 0; j < f.height; ++j)
+          for (int i = 0; i < f.width; ++i) {
+            const FarSlope b = brute_far_slope(f, i, j, heading_deg(deg), o);
+            if (std::isinf(b.slope)) continue;
+            ++finite;
+            cut += brute_far_slope(f, i, j, heading_deg(deg), open).slope != b.slope;
+          }
+      }
+      // Not vacuous: the bound hides the unbounded maximum of many texels.
+      EXPECT_GT(cut, finite / 20) << d << " " << k << " " << lines;
+    }
+}
+
+// The texels of `inner` (a window of `outer` at (x0, y0)) whose search of distance d
+// (plus a texel for the owner line's offset) stays inside the window along u.
+std::vector<std::pair<int, int>> texels_searching_inside(const HeightField& inner, Heading u, double d) {
+  std::vector<std::pair<int, int>> out;
+  for (int j = 0; j < inner.height; ++j)
+    for (int i = 0; i < inner.width; ++i) {
+      const double ei = u.east / inner.dx(j), ej = -u.north / inner.dy;  // texels per metre
+      const double norm = std::hypot(ei, ej);
+      const double x = i + ei * d + ei / norm, y = j + ej * d + ej / norm;
+      if (x >= 0 && y >= 0 && x <= inner.width - 1 && y <= inner.height - 1) out.emplace_back(i, j);
+    }
+  return out;
+}
+
+TEST(HorizonSweep, WindowsOfOneRasterSweepTheSameLines) {
+  // A window keeps its place in the raster (origin_column, origin_row), so its lines are
+  // the raster's: a texel whose bounded search stays inside the window gets the whole
+  // raster's code (±1 for the rounding of positions taken from another origin).
+  const HeightField whole = rough_field(70, 60, 30.0, 20.0, 30.0, 12, 200.0);
+  HeightField window(41, 37, 30.0);
+  window.dy = 20.0;
+  window.dx_per_row.assign(window.height, 30.0);
+  const int x0 = 17, y0 = 11;
+  for (int j = 0; j < window.height; ++j)
+    for (int i = 0; i < window.width; ++i) window.at(i, j) = whole.at(x0 + i, y0 + j);
+  HeightField unaligned = window;
+  window.origin_column = x0, window.origin_row = y0;
+  int compared = 0, off_unaligned = 0;
+  for (double deg : kHeadings)
+    for (int lines : {1, 2, 3}) {
+      MarchOptions o = sweep_options(4, lines, 6.371e6);
+      o.max_distance_m = 300.0;
+      const Heading u = heading_deg(deg);
+      const auto outer = sweep_far_slopes(whole, u, o), inner = sweep_far_slopes(window, u, o),
+                 other = sweep_far_slopes(unaligned, u, o);
+      for (auto [i, j] : texels_searching_inside(window, u, o.max_distance_m)) {
+        const int a = outer[(y0 + j) * whole.width + x0 + i], b = inner[j * window.width + i];
+        EXPECT_LE(std::abs(a - b), 1) << case_name("window", deg, 4, lines) << " at " << i << "," << j;
+        off_unaligned += std::abs(a - int{other[j * window.width + i]}) > 1;
+        ++compared;
+      }
+    }
+  ASSERT_GT(compared, 5000);
+  // Not vacuous: lines laid from the window's own corner see other samples.
+  EXPECT_GT(off_unaligned, compared / 10);
+}
+
 TEST(HorizonSweep, ThreadsSplitTheLinesWithoutChangingACode) {
   // Hundreds of lines, so every thread takes several tasks of 32 lines.
   const HeightField f = rough_field(230, 170, 30.0, 20.0, 30.0, 3, 200.0);
@@ -241,6 +315,11 @@ TEST(HorizonSweep, ThreadsSplitTheLinesWithoutChangingACode) {
     const std::vector<std::uint16_t> one = sweep_far_slopes(f, heading_deg(deg), o, 1);
     ASSERT_GT(std::count_if(one.begin(), one.end(), [](std::uint16_t q) { return q != kFarCodeNone; }), f.size() / 2);
     for (unsigned threads : {3u, 0u}) EXPECT_EQ(sweep_far_slopes(f, heading_deg(deg), o, threads), one) << deg;
+    MarchOptions bounded = o;
+    bounded.max_distance_m = 1500.0;
+    const std::vector<std::uint16_t> window = sweep_far_slopes(f, heading_deg(deg), bounded, 1);
+    EXPECT_NE(window, one) << deg;
+    EXPECT_EQ(sweep_far_slopes(f, heading_deg(deg), bounded, 0), window) << deg;
   }
 }
 
@@ -250,19 +329,21 @@ TEST(HorizonSweep, EqualsTheExactMarchWhereEveryTexelLiesOnALine) {
   const HeightField rect = rough_field(37, 29, 30.0, 20.0, 150.0, 2), square = rough_field(23, 17, 25.0, 25.0, 150.0, 3);
   for (double radius : {6371e3, 20e3})
     for (int k : {0, 4})
-      for (int lines : {1, 2, 3}) {
-        const MarchOptions o = sweep_options(k, lines, radius);
-        for (double deg : {0.0, 90.0, 180.0, 270.0}) {
-          const std::string what = case_name("rect", deg, k, lines);
-          expect_equal_horizons(sweep_horizons(rect, heading_deg(deg), o), exact_horizons(rect, heading_deg(deg), o),
-                                kCodeTolRad, what);
+      for (int lines : {1, 2, 3})
+        for (double d : {0.0, 180.0, 400.0}) {  // the DEM extent, and bounded searches
+          MarchOptions o = sweep_options(k, lines, radius);
+          o.max_distance_m = d;
+          for (double deg : {0.0, 90.0, 180.0, 270.0}) {
+            const std::string what = case_name("rect", deg, k, lines) + " D" + std::to_string(d);
+            expect_equal_horizons(sweep_horizons(rect, heading_deg(deg), o), exact_horizons(rect, heading_deg(deg), o),
+                                  kCodeTolRad, what);
+          }
+          for (double deg : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
+            const std::string what = case_name("square", deg, k, lines) + " D" + std::to_string(d);
+            expect_equal_horizons(sweep_horizons(square, heading_deg(deg), o),
+                                  exact_horizons(square, heading_deg(deg), o), kCodeTolRad, what);
+          }
         }
-        for (double deg : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
-          const std::string what = case_name("square", deg, k, lines);
-          expect_equal_horizons(sweep_horizons(square, heading_deg(deg), o),
-                                exact_horizons(square, heading_deg(deg), o), kCodeTolRad, what);
-        }
-      }
 }
 
 // RMSE (deg) of the sweep against the exact march over every texel and 16 headings
@@ -529,15 +610,22 @@ TEST(HorizonSweep, AppliesToRowsOfNearSpacingsAndDistancesCoveringTheDem) {
   EXPECT_FALSE(sweep_applicable(geographic, o));
   EXPECT_NE(sweep_inapplicable_reason(geographic, o).find("near a pole"), std::string::npos);
   EXPECT_THROW(sweep_far_slopes(geographic, heading_deg(30), o), std::invalid_argument);
-  // D must reach corner to corner: √(1080² + 560²) m.
+  // D bounds the search below the diagonal, √(1080² + 560²) m, and must reach past the
+  // near steps: 5 half texels of at most ½·√(30² + 20²) = 18.0 m.
   const double diagonal = std::hypot(36 * 30.0, 28 * 20.0);
   for (double d : {diagonal, diagonal + 1.0, 0.0}) {
     o.max_distance_m = d;
     EXPECT_TRUE(sweep_applicable(f, o)) << d;
+    EXPECT_FALSE(sweep_bounded(f, o)) << d;
   }
-  o.max_distance_m = diagonal - 0.01;
+  for (double d : {diagonal - 0.01, 91.0}) {
+    o.max_distance_m = d;
+    EXPECT_TRUE(sweep_applicable(f, o)) << d;
+    EXPECT_TRUE(sweep_bounded(f, o)) << d;
+  }
+  o.max_distance_m = 89.0;
   EXPECT_FALSE(sweep_applicable(f, o));
-  EXPECT_NE(sweep_inapplicable_reason(f, o).find("maximum distance"), std::string::npos);
+  EXPECT_NE(sweep_inapplicable_reason(f, o).find("near steps"), std::string::npos);
   EXPECT_THROW(sweep_far_slopes(f, heading_deg(30), o), std::invalid_argument);
 
   MarchOptions bad = sweep_options(-1, 2);

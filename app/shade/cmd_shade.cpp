@@ -526,9 +526,10 @@ void add_shade_command(CLI::App& root, Action& run) {
       ->capture_default_str();
   cmd->add_option("--horizons", args->horizons,
                   "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
-                  "with convex hulls: near-exact horizons in O(N^2) per azimuth; needs a projected grid (one row "
-                  "spacing), the default --max-distance and no --subsample; elsewhere the march runs, with a note "
-                  "when sweep was asked for)")
+                  "with convex hulls: near-exact horizons in O(N^2) per azimuth, within --max-distance if given; needs "
+                  "rows of spacings within 2x (not near a pole), a --max-distance beyond the near steps and no "
+                  "--subsample; elsewhere the march runs, with a note when sweep was asked for. A bounded distance "
+                  "sweeps on the CPU's cores; a hardware GPU marches it)")
       ->check(CLI::IsMember(horizon_method_names()))
       ->capture_default_str();
   cmd->add_option("--sweep-lines", args->options.march.sweep_lines,

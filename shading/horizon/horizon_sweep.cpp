@@ -25,12 +25,21 @@ std::string sweep_inapplicable_reason(const terrain::HeightField& field, const M
                   kMaxRowSpacingRatio, *lo, *hi);
     return text;
   }
-  if (o.max_distance_m <= 0.0) return "";  // the DEM extent
-  const double diagonal = std::hypot((field.width - 1) * *hi, (field.height - 1) * field.dy);
-  if (o.max_distance_m >= diagonal) return "";
-  std::snprintf(text, sizeof text, "the maximum distance %g m is below the DEM's diagonal %.1f m", o.max_distance_m,
-                diagonal);
-  return text;
+  if (!sweep_bounded(field, o)) return "";
+  // The near steps come from each texel's own ray, which does not stop at the distance.
+  const double longest_step = 0.5 * std::hypot(*hi, field.dy);
+  if (o.max_distance_m < (o.sweep_near_steps + 1) * longest_step) {
+    std::snprintf(text, sizeof text, "the maximum distance %g m is within the %d near steps (%.3g m)", o.max_distance_m,
+                  o.sweep_near_steps, (o.sweep_near_steps + 1) * longest_step);
+    return text;
+  }
+  return "";
+}
+
+bool sweep_bounded(const terrain::HeightField& field, const MarchOptions& o) {
+  if (o.max_distance_m <= 0.0) return false;  // the DEM extent
+  const double widest = *std::max_element(field.dx_per_row.begin(), field.dx_per_row.end());
+  return o.max_distance_m < std::hypot((field.width - 1) * widest, (field.height - 1) * field.dy);
 }
 
 double SweepGeometry::line_c(double a, double b) const {
@@ -62,7 +71,17 @@ SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int l
   if (g.curved()) (g.x_dominant ? b1 : a1) = g.rows->last();
   const double c_min = std::min({0.0, -g.r * a1, b1, b1 - g.r * a1});
   const double c_max = std::max({0.0, -g.r * a1, b1, b1 - g.r * a1});
-  g.c_low = c_min - g.spacing();
+  // Lines on the lattice c = k·spacing of the raster the grid is a window of (one row
+  // spacing: the window's c is the raster's less b₀ − r·a₀), so that windows cut from one
+  // raster sweep the same lines; the phase is taken modulo the spacing to keep c small.
+  double phase = 0.0;
+  if (!g.curved()) {
+    const double a0 = g.x_dominant ? field.origin_column : field.origin_row;
+    const double b0 = g.x_dominant ? field.origin_row : field.origin_column;
+    phase = b0 - g.r * a0;
+    phase -= std::floor(phase / g.spacing()) * g.spacing();
+  }
+  g.c_low = (std::floor((c_min + phase) / g.spacing()) - 1.0) * g.spacing() - phase;
   g.lines = static_cast<int>(std::ceil((c_max - g.c_low) / g.spacing())) + 2;
   return g;
 }
@@ -95,6 +114,82 @@ class Hull {
 
  private:
   std::vector<double> n_, z_;
+};
+
+// Upper convex hull of a run of samples that loses its farthest one as the search's far
+// end passes it: built from the nearest sample outwards, each push remembers the
+// vertices it hid, so that popping the farthest sample restores them.
+class FarHull {
+ public:
+  void clear() { n_.clear(), z_.clear(), hidden_n_.clear(), hidden_z_.clear(), hid_.clear(); }
+  bool empty() const { return hid_.empty(); }
+  // Adds a sample farther than every one held.
+  void push_far(double n, double z) {
+    int hid = 0;
+    while (n_.size() >= 2) {
+      const std::size_t top = n_.size() - 1;
+      // Keep top only if strictly above the chord from the one before it to (n, z).
+      if ((z_[top] - z) * (n_[top - 1] - n) < (z_[top - 1] - z) * (n_[top] - n)) break;
+      hidden_n_.push_back(n_[top]), hidden_z_.push_back(z_[top]);
+      n_.pop_back(), z_.pop_back(), ++hid;
+    }
+    n_.push_back(n), z_.push_back(z), hid_.push_back(hid);
+  }
+  // Removes the last sample pushed (the farthest held).
+  void pop_far() {
+    n_.pop_back(), z_.pop_back();
+    for (int k = hid_.back(); k > 0; --k) {
+      n_.push_back(hidden_n_.back()), z_.push_back(hidden_z_.back());
+      hidden_n_.pop_back(), hidden_z_.pop_back();
+    }
+    hid_.pop_back();
+  }
+  // max over the hull of (Z − z0)/(n − n0), for n0 nearer than every sample (not empty):
+  // the slopes rise then fall from the nearest vertex, so bisect for the turn.
+  double max_slope(double n0, double z0) const {
+    std::size_t lo = 0, hi = n_.size() - 1;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if ((z_[mid + 1] - z0) * (n_[mid] - n0) >= (z_[mid] - z0) * (n_[mid + 1] - n0)) lo = mid + 1;
+      else hi = mid;
+    }
+    return (z_[lo] - z0) / (n_[lo] - n0);
+  }
+
+ private:
+  std::vector<double> n_, z_;                 // nearest first
+  std::vector<double> hidden_n_, hidden_z_;  // the vertices pushes hid, last hidden on top
+  std::vector<int> hid_;                      // per push, how many it hid
+};
+
+// The samples within the maximum distance of the observer, as a queue that gains the
+// nearest and loses the farthest: the hull of the newest (Hull) and that of the older
+// ones (FarHull), which takes all of them over when its own run is used up, so every
+// sample is pushed at most twice.
+struct WindowHulls {
+  Hull near;
+  FarHull far;
+  std::vector<double> n, z;    // the samples entered, farthest first
+  std::size_t first = 0;       // the farthest one still within the distance
+  std::size_t split = 0;       // samples [first, split) are far's, [split, end) near's
+  void clear() { near.clear(), far.clear(), n.clear(), z.clear(), first = split = 0; }
+  void push(double pn, double pz) { near.push(pn, pz), n.push_back(pn), z.push_back(pz); }
+  // Drops the samples farther than `limit` steps from n0.
+  void expire(double n0, double limit) {
+    while (first < n.size() && n[first] - n0 > limit) {
+      if (first == split) {  // far is used up: it takes over near's samples
+        far.clear();
+        for (std::size_t k = n.size(); k-- > first;) far.push_far(n[k], z[k]);
+        near.clear();
+        split = n.size();
+      }
+      far.pop_far(), ++first;
+    }
+  }
+  double max_slope(double n0, double z0) const {
+    const double s = near.max_slope(n0, z0);
+    return far.empty() ? s : std::max(s, far.max_slope(n0, z0));
+  }
 };
 
 }  // namespace
@@ -161,37 +256,44 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   const int delay = o.sweep_near_steps + 1;
   std::vector<std::uint16_t> far(field.size(), kFarCodeNone);
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
+  // A bounded search: samples farther than D from the observer leave the window, as the
+  // exact march stops at t > D (with its 1e-12 of slack), t = (p − p₀)·step_m.
+  const bool bounded = sweep_bounded(field, o);
+  const double limit_steps = bounded ? o.max_distance_m * (1.0 + 1e-12) / g.step_m : 0.0;
   // A line writes only the texels it owns, so lines run on any thread in any order.
-  auto sweep_line = [&](int line, Hull& hull, LineSamples& line_samples) {
+  auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
     fill_line(g, c, line_samples);
     const std::vector<double>&bs = line_samples.b, &ps = line_samples.p;
-    hull.clear();
+    hulls.clear();
     for (int n = g.samples - 1; n >= 0; --n) {
       // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).
       if (const int m = n + delay; m < g.samples) {
         const double b = bs[m];
-        if (b >= -eps && b <= g.extent_b - 1 + eps)
-          hull.push(ps[m], bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m]);
+        if (b >= -eps && b <= g.extent_b - 1 + eps) {
+          const double z = bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m];
+          bounded ? hulls.push(ps[m], z) : hulls.near.push(ps[m], z);
+        }
       }
       if (n % 2 != 0) continue;  // observers sit on whole texels of a
       const double a = g.a_at(n), b = bs[n], pn = ps[n];
+      if (bounded) hulls.expire(pn, limit_steps);
       for (const double jb : {std::floor(b), std::ceil(b)}) {
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
         const int i = static_cast<int>(q.x), j = static_cast<int>(q.y);
         // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
-        const double slope = hull.max_slope(pn, field.at(i, j) - pn * drop * pn);
+        const double slope = hulls.max_slope(pn, field.at(i, j) - pn * drop * pn);
         far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
       }
     }
   };
   constexpr int kLinesPerTask = 32;  // a task's hull and samples serve its lines
   parallel::parallel_rows((g.lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
-    Hull hull;
+    WindowHulls hulls;
     LineSamples line_samples;
     for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
-      sweep_line(line, hull, line_samples);
+      sweep_line(line, hulls, line_samples);
   });
   return far;
 }

@@ -30,10 +30,17 @@
 // projected grids). The owner line is within Δc/2 of the texel in Γ, i.e. within
 // Δc/2·D/D_ref rows.
 //
-// Needs the maximum distance to cover the DEM (the hull holds every farther sample) and
-// rows whose spacings differ by less than kMaxRowSpacingRatio (nearer a pole the march is
-// used): sweep_applicable says when; elsewhere callers march. Cost per azimuth: about
-// 2·sweep_lines·(1 + |r|)·N² samples, each pushed once, and one hull walk per texel.
+// A maximum distance D below the DEM's diagonal bounds the far field as the exact march
+// does (t ≤ D): the samples within D of an observer are a window that gains the nearest
+// sample and loses the farthest, held as two hulls, a queue of two stacks (the newest
+// samples' hull, and the older ones' built outwards from the nearest with what each push
+// hid, so that the farthest can be popped); a sample is pushed at most twice, and the
+// older hull is bisected for its tangent.
+//
+// Needs rows whose spacings differ by less than kMaxRowSpacingRatio (nearer a pole the
+// march is used) and a distance beyond the near steps: sweep_applicable says when;
+// elsewhere callers march. Cost per azimuth: about 2·sweep_lines·(1 + |r|)·N² samples,
+// each pushed once (twice when bounded), and one hull walk per texel.
 #pragma once
 
 #include "shading/horizon/azimuth.h"
@@ -57,12 +64,15 @@ inline constexpr double kMaxRowSpacingRatio = 2.0;
 inline constexpr double kDueEastSlope = 1e-6;
 
 // True when the rows' spacings stay within kMaxRowSpacingRatio and the maximum distance
-// reaches every texel from every other (MarchOptions::sweep_near_steps, sweep_lines:
+// (if bounded) reaches past the near steps (MarchOptions::sweep_near_steps, sweep_lines:
 // see there).
 bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& options);
 // Why it is false, for messages ("" when it applies): the rows' spacings differ too much,
-// or the maximum distance is below the diagonal between the corner texels.
+// or the maximum distance ends within the near steps of half texels.
 std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& options);
+// True when the maximum distance is below the diagonal between the corner texels: the far
+// field is a window (header). horizon_sweep.comp has none, so a GPU marches such fields.
+bool sweep_bounded(const terrain::HeightField& field, const MarchOptions& options);
 
 // Geometry of the sweep lines of one heading (texel units), shared with the GPU.
 struct SweepGeometry {
@@ -112,7 +122,7 @@ float decode_far_slope(std::uint16_t code);
 
 // Far-field slope codes of every texel for heading u, [j·width + i]: the max over the
 // texel's owner line's samples n ≥ sweep_near_steps + 1 of (z − t²/(2R) − h₀)/t
-// (t = (n − n₀)·step_m), encode_far_slope'd (kFarCodeNone if none), with the lines
+// (t = (n − n₀)·step_m ≤ the maximum distance, if bounded), encode_far_slope'd (kFarCodeNone if none), with the lines
 // spread over `threads` (0: every core; the result does not depend on it). Throws
 // std::invalid_argument unless applicable.
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options,

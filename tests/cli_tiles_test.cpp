@@ -436,24 +436,37 @@ TEST_F(Tiles, AShardWhollyOutsideTheDemWritesNothing) {
   EXPECT_GT(written, 0);
 }
 
-// The plan alone (no binary): a block grid aligned to its block size, and shards that
-// partition the blocks with costs within one block of each other.
-TEST(TilePlan, BlocksAlignAndShardsPartitionByCost) {
+// The plan alone (no binary): the fewest blocks within the block size, of near-equal
+// sides, that cover each zoom's tiles once; and shards that partition the blocks with
+// costs within one block of each other.
+TEST(TilePlan, FewestEvenBlocksCoverTheTilesAndShardsPartitionByCost) {
   namespace at = skylit::app::tiles;
   const terrain::MercatorBox box{-13160000, 4070000, -13130000, 4085000};  // ~30 × 15 km at 34°N
   std::vector<at::Block> all;
-  for (int z = 10; z <= 14; ++z) {
+  for (int z = 10; z <= 16; ++z) {
     const at::ZoomPlan plan = at::plan_zoom(box, 34.4, z, 256, {});
     EXPECT_GE(plan.halo, at::kMinHalo);
     EXPECT_LE(plan.halo, at::kMaxHalo);
     EXPECT_LE(plan.max_distance_m, at::kDefaultMaxDistanceM);
-    for (const at::Block& b : at::blocks(plan, 256)) {
-      EXPECT_EQ(b.tiles.x0 / plan.block_columns, b.column);  // inside its grid cell
-      EXPECT_EQ(b.tiles.x1 / plan.block_columns, b.column);
-      EXPECT_EQ(b.tiles.y0 / plan.block_rows, b.row);
-      EXPECT_EQ(b.tiles.y1 / plan.block_rows, b.row);
+    const terrain::TileRange& c = plan.covering;
+    const auto zoom_blocks = at::blocks(plan, 256);
+    const int nx = (c.columns() + plan.block_columns - 1) / plan.block_columns;
+    const int ny = (c.rows() + plan.block_rows - 1) / plan.block_rows;
+    EXPECT_EQ(zoom_blocks.size(), static_cast<std::size_t>(nx * ny)) << z;
+    std::set<std::pair<int, int>> covered;
+    int min_w = 1 << 30, max_w = 0, min_h = 1 << 30, max_h = 0;
+    for (const at::Block& b : zoom_blocks) {
+      EXPECT_LE(b.tiles.columns(), plan.block_columns);
+      EXPECT_LE(b.tiles.rows(), plan.block_rows);
+      min_w = std::min(min_w, b.tiles.columns()), max_w = std::max(max_w, b.tiles.columns());
+      min_h = std::min(min_h, b.tiles.rows()), max_h = std::max(max_h, b.tiles.rows());
+      for (int y = b.tiles.y0; y <= b.tiles.y1; ++y)
+        for (int x = b.tiles.x0; x <= b.tiles.x1; ++x) EXPECT_TRUE(covered.insert({x, y}).second) << z;
       all.push_back(b);
     }
+    EXPECT_EQ(covered.size(), static_cast<std::size_t>(c.columns()) * c.rows()) << z;  // each tile once
+    EXPECT_LE(max_w - min_w, 1) << z;
+    EXPECT_LE(max_h - min_h, 1) << z;
   }
   ASSERT_GT(all.size(), 8u);
   for (int n : {1, 2, 3, 7}) {

@@ -54,19 +54,34 @@ ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latit
   return p;
 }
 
+namespace {
+
+// [first, last] of part k of n near-equal parts of [lo, hi] (the first parts one longer).
+std::pair<int, int> part(int lo, int hi, int n, int k) {
+  const int count = hi - lo + 1, base = count / n, extra = count % n;
+  const int first = lo + k * base + std::min(k, extra);
+  return {first, first + base + (k < extra ? 1 : 0) - 1};
+}
+
+}  // namespace
+
 std::vector<Block> blocks(const ZoomPlan& plan, int tile_size) {
   std::vector<Block> out;
   const terrain::TileRange& c = plan.covering;
   if (c.empty()) return out;
-  const int bw = plan.block_columns, bh = plan.block_rows;
-  for (int by = c.y0 / bh; by <= c.y1 / bh; ++by)
-    for (int bx = c.x0 / bw; bx <= c.x1 / bw; ++bx) {
+  // As few blocks as the sizes allow, of near-equal sides, from the covering range's
+  // corner: each block pays two halos per side, so fewer and fuller blocks render less.
+  const int nx = (c.columns() + plan.block_columns - 1) / plan.block_columns;
+  const int ny = (c.rows() + plan.block_rows - 1) / plan.block_rows;
+  for (int by = 0; by < ny; ++by)
+    for (int bx = 0; bx < nx; ++bx) {
+      const auto [x0, x1] = part(c.x0, c.x1, nx, bx);
+      const auto [y0, y1] = part(c.y0, c.y1, ny, by);
       Block b;
       b.z = plan.z;
       b.column = bx;
       b.row = by;
-      b.tiles = {plan.z, std::max(c.x0, bx * bw), std::max(c.y0, by * bh), std::min(c.x1, bx * bw + bw - 1),
-                 std::min(c.y1, by * bh + bh - 1)};
+      b.tiles = {plan.z, x0, y0, x1, y1};
       const double w = b.tiles.columns() * double(tile_size) + 2 * plan.halo;
       const double h = b.tiles.rows() * double(tile_size) + 2 * plan.halo;
       b.cost = w * h;

@@ -55,14 +55,16 @@ ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latit
 
 struct Block {
   int z = 0;
-  int column = 0, row = 0;       // block index on the zoom's block grid
+  int column = 0, row = 0;       // block index from the covering range's corner
   terrain::TileRange tiles;      // the block's tiles that cover the DEM
   double cost = 0.0;             // pixels to render, halo included
   bool operator==(const Block&) const = default;
 };
 
-// The zoom's blocks: the grid of block_columns × block_rows tiles aligned to multiples of
-// that size from tile (0, 0), intersected with the covering range; in row-major order.
+// The zoom's blocks: the covering range cut into the fewest blocks of at most
+// block_columns × block_rows tiles, ⌈columns/block_columns⌉ × ⌈rows/block_rows⌉ of
+// near-equal sides (the first ones a tile longer), in row-major order; Block::column and
+// row count blocks from the range's corner.
 std::vector<Block> blocks(const ZoomPlan& plan, int tile_size);
 
 struct Shard {

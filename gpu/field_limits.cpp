@@ -45,7 +45,7 @@ bool fits(const Limits& l, int width, int height, shading::Product product, cons
     }
     if (total > l.texture_buffer_texels || scratch * sizeof(float) > l.storage_block_bytes) return false;
   }
-  const bool sweeps = o.march.method == horizon::HorizonMethod::Sweep && o.march.max_distance_m <= 0.0;
+  const bool sweeps = o.march.method == horizon::HorizonMethod::Sweep;  // bounded or not: the kernel's lines
   if (sweeps && !shading::traits(product).local &&
       static_cast<std::size_t>(2 * std::max(width, height) - 1) > l.texture_size)
     return false;

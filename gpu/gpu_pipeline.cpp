@@ -82,6 +82,9 @@ constexpr int kLocalSize = 8;  // 8×8 texels per work group
 constexpr int kSweepLocalSize = 64;  // sweep lines per work group
 constexpr int kFarImageUnit = 0;     // horizon_sweep.comp's uimage2DArray of far-slope codes
 constexpr int kHullImageUnit = 1;    // and its image2D of convex hulls
+constexpr int kHeldImageUnit = 2;    // a bounded search's samples entered (rgba32f),
+constexpr int kFarHullImageUnit = 3; // the older samples' hull (rg32f)
+constexpr int kHiddenImageUnit = 4;  // and the vertices its pushes hid (rg32f)
 // Hull scratch per sweep dispatch: lines × samples × 8 B (and ≤ GL_MAX_TEXTURE_SIZE
 // lines); a heading's lines go in as many dispatches as the budget needs, each of at
 // least kMinSweepGroups work groups (both llvmpipe threads busy, and their tails
@@ -178,8 +181,8 @@ bool sun_lit(Product product, const shading::ProductOptions& o) {
 // and a time series, the viewer or the bench computes the same size again and again.
 struct SweepTextures {
   TextureArray far, sun_far;
-  Texture2D hull;
-  std::array<int, 3> far_size{}, sun_far_size{}, hull_size{};
+  Texture2D hull, held, far_hull, hidden;  // the last three: a bounded search's window
+  std::array<int, 3> far_size{}, sun_far_size{}, hull_size{}, window_size{};
 
   static const TextureArray& array(TextureArray& t, std::array<int, 3>& size, int w, int h, int layers) {
     if (size != std::array{w, h, layers}) {
@@ -196,6 +199,21 @@ struct SweepTextures {
       hull_size = {lanes, samples, 0};
     }
     return hull;
+  }
+  // Binds the window's scratch: lanes × samples where bounded, else 1 × 1 (the kernel
+  // declares the images but does not touch them).
+  void bind_window(int lanes, int samples, bool bounded) {
+    const std::array size = bounded ? std::array{lanes, samples, 0} : std::array{1, 1, 0};
+    if (window_size != size) {
+      held = Texture2D(), far_hull = Texture2D(), hidden = Texture2D();
+      held = Texture2D(size[0], size[1], TextureFormat::RGBA32F);
+      far_hull = Texture2D(size[0], size[1], TextureFormat::RG32F);
+      hidden = Texture2D(size[0], size[1], TextureFormat::RG32F);
+      window_size = size;
+    }
+    held.bind_image(kHeldImageUnit, true, true);
+    far_hull.bind_image(kFarHullImageUnit, true, true);
+    hidden.bind_image(kHiddenImageUnit, true, true);
   }
 };
 
@@ -219,7 +237,9 @@ void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field,
     geometry.push_back(horizon::sweep_geometry(field, u, o.sweep_lines, rows));
     max_samples = std::max(max_samples, geometry.back().samples);
   }
-  const std::size_t per_line = static_cast<std::size_t>(max_samples) * 2 * sizeof(float);
+  // A bounded search's window holds 8 more floats a sample (held, far hull, hidden).
+  const bool bounded = horizon::sweep_bounded(field, o);
+  const std::size_t per_line = static_cast<std::size_t>(max_samples) * (bounded ? 10 : 2) * sizeof(float);
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   if (max_samples > max_size)
@@ -234,6 +254,7 @@ void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field,
   lanes = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(lanes), static_cast<std::size_t>(max_size),
                                                   budget_lanes}));
   textures.hull_of(lanes, max_samples).bind_image(kHullImageUnit, true, true);
+  textures.bind_window(lanes, max_samples, bounded);
   far.clear(horizon::kFarCodeNone);
   far.bind_image(kFarImageUnit, false, true);
   // Curved rows' tables in double (bound also when unused: the kernel declares them).
@@ -265,6 +286,9 @@ void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field,
     sweep.set_uniform("spacing_d", g.spacing());
     sweep.set_uniform("drop", static_cast<float>(o.curvature.drop_per_square_metre() * g.step_m * g.step_m));
     sweep.set_uniform("step_m", static_cast<float>(g.step_m));
+    sweep.set_uniform("bounded", bounded ? 1 : 0);
+    // As the CPU: t = (p − p₀)·step_m ≤ D with the exact march's 1e-12 of slack.
+    sweep.set_uniform("limit_steps", static_cast<float>(bounded ? o.max_distance_m * (1.0 + 1e-12) / g.step_m : 0.0));
     for (int first = 0; first < g.lines; first += lanes) {
       sweep.set_uniform("line_offset", first);
       sweep.dispatch_covering(std::min(lanes, g.lines - first));
@@ -494,11 +518,6 @@ struct GpuProductPipeline::Impl {
     if (!sweeps_on_host) sweeps_on_host = software_renderer();
     return *sweeps_on_host;
   }
-  // Whether a sweep the reference would run (uses_sweep, sun_sweeps) runs here: a bounded
-  // search needs the host's window (horizon::sweep_bounded); a GPU kernel marches it.
-  bool sweeps_here(const terrain::HeightField& f, const horizon::MarchOptions& m) {
-    return host_sweeps() || !horizon::sweep_bounded(f, m);
-  }
   // horizon_sweep.comp for the sky's march options (sun: false) or the sun's (their near
   // steps and lines), compiled at first use; null where the host sweeps (sweep_pass).
   std::optional<ComputeProgram> sweeps[2];
@@ -513,6 +532,9 @@ struct GpuProductPipeline::Impl {
           .set("SWEEP_LOCAL_SIZE", kSweepLocalSize)
           .set("HULL_IMAGE_UNIT", kHullImageUnit)
           .set("FAR_IMAGE_UNIT", kFarImageUnit)
+          .set("HELD_IMAGE_UNIT", kHeldImageUnit)
+          .set("FAR_HULL_IMAGE_UNIT", kFarHullImageUnit)
+          .set("HIDDEN_IMAGE_UNIT", kHiddenImageUnit)
           .set("GAMMA_BINDING", kSweepGamma)
           .set("ROW_DX_D_BINDING", kSweepRowDx)
           .set("DUE_EAST_SLOPE", horizon::kDueEastSlope);
@@ -529,8 +551,7 @@ struct GpuProductPipeline::Impl {
   double sun_stage(const terrain::HeightField& f, const shading::ProductOptions& o, std::size_t invocations,
                    Buffer& shadow, GpuPipelineTimings& t) {
     std::size_t& uploaded = t.uploaded_bytes;
-    const bool swept =
-        shading::sun_sweeps(f, shading::sun_shadow_options(o)) && sweeps_here(f, shading::sun_shadow_options(o).march);
+    const bool swept = shading::sun_sweeps(f, shading::sun_shadow_options(o));
     const TextureArray* far = nullptr;
     // The resident heights and row spacings as buffer textures, for the sweep and the pass.
     const BufferTexture heights_tex(field.heights()), row_dx_tex(field.row_dx());
@@ -1101,7 +1122,7 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   double first_distance = 0.0;
   float z_bound = std::numeric_limits<float>::infinity();  // the march's early exit (horizon_march.h)
   // As the reference decides; an incremental refresh marches (the sweep is not local).
-  const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions) && k.sweeps_here(field, mOptions.march);
+  const bool sweep = !reuse && !incremental && shading::uses_sweep(field, mOptions);
   if (!reuse) k.last_compute_swept = sweep;
   // A swept field refreshed after an edit marches: its kernels are compiled and its
   // pyramid built now, so that the edit only updates the pyramid.

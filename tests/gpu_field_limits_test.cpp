@@ -22,7 +22,8 @@ using FieldLimits = skylit::gpu::testing::GpuTest;
 ProductOptions bounded(int k_v) {
   ProductOptions o;
   o.march.k_v = k_v;
-  o.march.max_distance_m = 5000;  // a march: no sweep-line limit
+  o.march.max_distance_m = 5000;
+  o.march.method = skylit::horizon::HorizonMethod::March;  // no sweep-line limit
   return o;
 }
 

@@ -226,48 +226,53 @@ TEST_F(GpuProductsTest, SweepFarCodesEqualTheReferenceCodes) {
   projected.dy = 21.0;
   HeightField geographic = projected;
   for (int j = 0; j < geographic.height; ++j) geographic.dx_per_row[j] = 24.0 + 0.1 * j;
-  for (const HeightField* f : {&projected, &geographic}) {
-    const HeightField& field = *f;
-    const char* what = f == &projected ? "projected" : "geographic";
-    const int w = f == &projected ? 8 : 32;
-    ProductOptions o = default_options();
-    o.march.method = horizon::HorizonMethod::Sweep;
-    o.march.azimuths = w;
-    GpuProductPipeline pipeline(Product::Svf, o);
-    // A software rasterizer sweeps on the host by default (the same cores, ~3.5× faster),
-    // which must upload the reference's codes unchanged, each to its band's layer.
-    EXPECT_EQ(pipeline.sweeps_on_host(), context->is_software());
-    pipeline.set_sweeps_on_host(true);
-    pipeline.compute(field);
-    const std::vector<std::uint16_t> host = pipeline.far_codes();
-    pipeline.set_sweeps_on_host(false);
-    pipeline.compute(field);
-    const std::vector<std::uint16_t> gpu = pipeline.far_codes();
-    ASSERT_EQ(gpu.size(), field.size() * w);
-    ASSERT_EQ(host.size(), field.size() * w);
-    std::size_t equal = 0, finite = 0;
-    int worst = 0;
-    for (int k = 0; k < w; ++k) {
-      const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, w)),
-                                                 o.march);
-      EXPECT_TRUE(std::equal(cpu.begin(), cpu.end(), host.begin() + k * field.size())) << what << " band " << k;
-      for (std::size_t t = 0; t < field.size(); ++t) {
-        const int g = gpu[k * field.size() + t], c = cpu[t];
-        if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
-          EXPECT_EQ(g, c) << what << " band " << k << " texel " << t;
-          continue;
+  // The whole field (≈ 3.5 km across) and a bounded search, whose window the kernel
+  // keeps as the host does (horizon_sweep.h).
+  for (const double d : {0.0, 1000.0})
+    for (const HeightField* f : {&projected, &geographic}) {
+      const HeightField& field = *f;
+      const std::string what = std::string(f == &projected ? "projected" : "geographic") + " D " + std::to_string(d);
+      const int w = f == &projected ? 8 : 32;
+      ProductOptions o = default_options();
+      o.march.method = horizon::HorizonMethod::Sweep;
+      o.march.azimuths = w;
+      o.march.max_distance_m = d;
+      ASSERT_EQ(horizon::sweep_bounded(field, o.march), d > 0.0);
+      GpuProductPipeline pipeline(Product::Svf, o);
+      // A software rasterizer sweeps on the host by default (the same cores, ~3.5× faster),
+      // which must upload the reference's codes unchanged, each to its band's layer.
+      EXPECT_EQ(pipeline.sweeps_on_host(), context->is_software());
+      pipeline.set_sweeps_on_host(true);
+      pipeline.compute(field);
+      const std::vector<std::uint16_t> host = pipeline.far_codes();
+      pipeline.set_sweeps_on_host(false);
+      pipeline.compute(field);
+      const std::vector<std::uint16_t> gpu = pipeline.far_codes();
+      ASSERT_EQ(gpu.size(), field.size() * w);
+      ASSERT_EQ(host.size(), field.size() * w);
+      std::size_t equal = 0, finite = 0;
+      int worst = 0;
+      for (int k = 0; k < w; ++k) {
+        const auto cpu = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(horizon::band_azimuth(k, w)),
+                                                   o.march);
+        EXPECT_TRUE(std::equal(cpu.begin(), cpu.end(), host.begin() + k * field.size())) << what << " band " << k;
+        for (std::size_t t = 0; t < field.size(); ++t) {
+          const int g = gpu[k * field.size() + t], c = cpu[t];
+          if (g == horizon::kFarCodeNone || c == horizon::kFarCodeNone) {
+            EXPECT_EQ(g, c) << what << " band " << k << " texel " << t;
+            continue;
+          }
+          ++finite;
+          equal += g == c;
+          worst = std::max(worst, std::abs(g - c));
         }
-        ++finite;
-        equal += g == c;
-        worst = std::max(worst, std::abs(g - c));
       }
+      std::cout << "[ far codes ] " << what << ": " << finite << " finite, " << 100.0 * equal / finite
+                << "% equal, worst " << worst << " code(s)\n";
+      EXPECT_GT(finite, field.size() * w / 2) << what;  // most texels have a far field
+      EXPECT_LE(worst, 1) << what;
+      EXPECT_GE(equal, 0.98 * finite) << what;  // observed 99.8 %: float slopes err by ~1e-6, a code is 3e-5 of x
     }
-    std::cout << "[ far codes ] " << what << ": " << finite << " finite, " << 100.0 * equal / finite
-              << "% equal, worst " << worst << " code(s)\n";
-    EXPECT_GT(finite, field.size() * w / 2) << what;  // most texels have a far field
-    EXPECT_LE(worst, 1) << what;
-    EXPECT_GE(equal, 0.98 * finite) << what;  // observed 99.8 %: float slopes err by ~1e-6, a code is 3e-5 of x
-  }
 }
 
 // A sweep line holds 2·side − 1 samples in an image column: past GL_MAX_TEXTURE_SIZE the

@@ -60,8 +60,7 @@ std::optional<BlockPlan> plan_blocks(const terrain::DemInfo& dem, double smalles
   if (local) {
     plan.halo = 1;  // the 3×3 window
   } else {
-    // The side the GPU takes for a bounded search (a GPU marches it, the host sweeps it:
-    // neither has the sweep kernel's limit).
+    // The side the GPU takes for a bounded search.
     shading::ProductOptions bounded = options;
     bounded.march.max_distance_m = options.march.max_distance_m > 0.0 ? options.march.max_distance_m
                                                                       : horizon::kDefaultBoundedDistanceM;

@@ -528,8 +528,7 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
                   "with convex hulls: near-exact horizons in O(N^2) per azimuth, within --max-distance if given; needs "
                   "rows of spacings within 2x (not near a pole), a --max-distance beyond the near steps and no "
-                  "--subsample; elsewhere the march runs, with a note when sweep was asked for. A bounded distance "
-                  "sweeps on the CPU's cores; a hardware GPU marches it)")
+                  "--subsample; elsewhere the march runs, with a note when sweep was asked for)")
       ->check(CLI::IsMember(horizon_method_names()))
       ->capture_default_str();
   cmd->add_option("--sweep-lines", args->options.march.sweep_lines,

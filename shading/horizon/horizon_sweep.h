@@ -71,7 +71,7 @@ bool sweep_applicable(const terrain::HeightField& field, const MarchOptions& opt
 // or the maximum distance ends within the near steps of half texels.
 std::string sweep_inapplicable_reason(const terrain::HeightField& field, const MarchOptions& options);
 // True when the maximum distance is below the diagonal between the corner texels: the far
-// field is a window (header). horizon_sweep.comp has none, so a GPU marches such fields.
+// field is a window (header; horizon_sweep.comp keeps the same window).
 bool sweep_bounded(const terrain::HeightField& field, const MarchOptions& options);
 
 // Geometry of the sweep lines of one heading (texel units), shared with the GPU.

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -43,6 +44,9 @@ void check_absent(const std::filesystem::path& path, bool overwrite, const std::
 void write_rgb_png(const std::string& path, int width, int height, std::span<const std::uint8_t> rgb, bool overwrite) {
   terrain::RasterWriteOptions w;
   w.format = "PNG";
+  // zlib level 3: a 1280×720 frame of the sample flight encodes in 0.45× level 6's time
+  // (~100 ms against ~230 ms on the CI-class VM) for 5.5 % more bytes.
+  w.creation_options = {"ZLEVEL=3"};
   w.layout = terrain::SampleLayout::PixelInterleaved;
   w.overwrite = overwrite;
   terrain::GeoReference none;
@@ -69,18 +73,30 @@ class PngFrames final : public FrameSink {
       throw std::invalid_argument("output '" + pattern_ + "' names every frame alike");
     for (int k = 0; k < o.frames; ++k) check_absent(frame_path(pattern_, k), o.overwrite);
   }
-  void write(std::span<const std::uint8_t> rgb) override {
-    write_rgb_png(frame_path(pattern_, next_++), options_.width, options_.height, rgb, options_.overwrite);
+  ~PngFrames() override {
+    if (writing_.valid()) writing_.wait();
   }
-  void finish() override {}
+  // Frame k is encoded on another thread while frame k + 1 is drawn; one at a time.
+  void write(std::span<const std::uint8_t> rgb) override {
+    wait_for_write();
+    writing_ = std::async(std::launch::async, [this, path = frame_path(pattern_, next_++),
+                                               frame = std::vector<std::uint8_t>(rgb.begin(), rgb.end())] {
+      write_rgb_png(path, options_.width, options_.height, frame, options_.overwrite);
+    });
+  }
+  void finish() override { wait_for_write(); }
   std::string description() const override {
     return pattern_ + " (" + std::to_string(next_) + " PNG frame" + (next_ == 1 ? "" : "s") + ")";
   }
 
  private:
+  void wait_for_write() {
+    if (writing_.valid()) writing_.get();  // rethrows the writer's error here
+  }
   std::string pattern_;
   SinkOptions options_;
   int next_ = 0;
+  std::future<void> writing_;
 };
 
 // --- ffmpeg ---------------------------------------------------------------------------

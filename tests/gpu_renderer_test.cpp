@@ -4,6 +4,7 @@
 // and compile nothing; an edit recomputes; a change in the lighting's shape (colour, sun
 // below the horizon) gets its own kernels; auto takes the reference where the GPU lacks
 // the product. Runs on Mesa llvmpipe where there is no GPU.
+#include "lighting_test_util.h"
 #include "gpu_test_util.h"
 #include "gpu_tolerances.h"
 
@@ -25,6 +26,8 @@
 namespace skylit::gpu {
 namespace {
 
+using ::skylit::testing::sun_at;  // lighting_test_util.h
+
 using shading::FrameInputs;
 using shading::Lighting;
 using shading::Product;
@@ -32,14 +35,6 @@ using shading::ProductBands;
 using shading::ProductOptions;
 
 using GpuRendererTest = testing::GpuTest;
-
-Lighting lighting_at(double azimuth_deg, double elevation_deg, const std::string& sky = "uniform") {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = sky;
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
 
 ProductOptions small_options() {
   ProductOptions o;
@@ -73,7 +68,7 @@ TEST_F(GpuRendererTest, SeriesFramesEqualFreshPipelinesAndReuseTheVisibility) {
   const ProductOptions o = small_options();
   const auto renderer = renderer_on(f, o, 3);
   GpuRenderer& r = *renderer;
-  const Lighting suns[] = {lighting_at(90, 10), lighting_at(180, 50), lighting_at(270, 25)};
+  const Lighting suns[] = {sun_at(90, 10), sun_at(180, 50), sun_at(270, 25)};
   bool first = true;  // the renderer's first frame reports its context's creation
   for (Product p : {Product::Irradiance, Product::Shaded, Product::Shadow}) {
     for (int k = 0; k < 3; ++k) {
@@ -100,7 +95,7 @@ TEST_F(GpuRendererTest, BlockedSeriesFramesEqualFreshPipelinesAndReuseTheHorizon
   const ProductOptions o = small_options();
   const auto renderer = renderer_on(f, o, 3);
   GpuRenderer& r = *renderer;
-  const Lighting sun = lighting_at(135, 30, "preetham");
+  const Lighting sun = sun_at(135, 30, "preetham");
   const double dx = f.mean_dx(), dy = f.dy;
   for (Product p : {Product::Shaded, Product::Irradiance}) {
     for (int k = 0; k < 3; ++k) {
@@ -125,7 +120,7 @@ TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
   const ProductOptions o = small_options();
   const auto renderer = renderer_on(f, o, 2);
   GpuRenderer& r = *renderer;
-  const Lighting sun = lighting_at(135, 30);
+  const Lighting sun = sun_at(135, 30);
   r.frame(Product::Irradiance, {sun, {}, std::nullopt});
   const terrain::PixelRect edit{20, 30, 10, 6};
   std::vector<float> raised;
@@ -143,7 +138,7 @@ TEST_F(GpuRendererTest, ALightingOfAnotherShapeGetsItsOwnKernels) {
   const ProductOptions o = small_options();
   const auto renderer = renderer_on(f, o, 3);
   GpuRenderer& r = *renderer;
-  const Lighting grey = lighting_at(120, 35), colour = lighting_at(120, 35, "preetham"), night = lighting_at(120, -5);
+  const Lighting grey = sun_at(120, 35), colour = sun_at(120, 35, "preetham"), night = sun_at(120, -5);
   ASSERT_TRUE(colour.colour && !grey.colour);
   for (const Lighting& l : {grey, colour, night}) {
     const ProductBands got = r.frame(Product::Shaded, {l, {}, std::nullopt});
@@ -157,8 +152,8 @@ TEST_F(GpuRendererTest, SeriesFramesMatchTheReference) {
   const ProductOptions o = small_options();
   const auto renderer = renderer_on(f, o, 2);
   GpuRenderer& r = *renderer;
-  const Lighting sun = lighting_at(300, 20);
-  r.frame(Product::Irradiance, {lighting_at(60, 40), {}, std::nullopt});
+  const Lighting sun = sun_at(300, 20);
+  r.frame(Product::Irradiance, {sun_at(60, 40), {}, std::nullopt});
   const ProductBands gpu = r.frame(Product::Irradiance, {sun, {}, std::nullopt});
   ASSERT_TRUE(r.last_timings().horizons_reused);
   ProductOptions lit = o;
@@ -189,15 +184,15 @@ TEST_F(GpuRendererTest, AutoTakesTheReferenceWhereTheGpuLacksTheProduct) {
   o.exact = true;  // the sun's exact march is CPU-only
   o.exact_options.sky_azimuths = 16;
   r->set_options(o);
-  r->frame(Product::Shadow, {lighting_at(200, 15), {}, std::nullopt});
+  r->frame(Product::Shadow, {sun_at(200, 15), {}, std::nullopt});
   EXPECT_FALSE(r->on_gpu());
   EXPECT_EQ(r->description(), "reference (CPU; the GPU pipeline lacks these options)");
   EXPECT_TRUE(notes.empty());
   const auto gpu = make_renderer(Backend::Gpu);
   gpu->set_field(f);
   gpu->set_options(o);
-  EXPECT_THROW(gpu->frame(Product::Shadow, {lighting_at(200, 15), {}, std::nullopt}), std::invalid_argument);
-  EXPECT_TRUE(gpu->lacks(Product::Shadow, shading::frame_options(o, {lighting_at(200, 15), {}, std::nullopt})));
+  EXPECT_THROW(gpu->frame(Product::Shadow, {sun_at(200, 15), {}, std::nullopt}), std::invalid_argument);
+  EXPECT_TRUE(gpu->lacks(Product::Shadow, shading::frame_options(o, {sun_at(200, 15), {}, std::nullopt})));
 }
 
 // Frames left on the GPU hold what frame() reads back: the same floats, and for
@@ -206,7 +201,7 @@ TEST_F(GpuRendererTest, FramesOnTheGpuHoldWhatFrameReadsBack) {
   const terrain::HeightField f = testing::synthetic_field();
   const auto renderer = renderer_on(f, small_options(), 2);
   GpuRenderer& r = *renderer;
-  const Lighting sun = lighting_at(225, 30, "preetham");
+  const Lighting sun = sun_at(225, 30, "preetham");
   for (Product p : {Product::Skyview, Product::Shadow, Product::Irradiance, Product::Shaded}) {
     const ProductBands host = r.frame(p, {sun, {}, std::nullopt});
     const GpuFrame device = r.frame_on_gpu(p, {sun, {}, std::nullopt});

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gpu/gl_context.h"
+#include "lighting_test_util.h"
 #include "shading/blockers/sphere_blocker.h"
 #include "shading/lighting.h"
 #include "terrain/dem_reader.h"
@@ -92,14 +93,7 @@ inline bool real_dem(terrain::HeightField& out) {
   return true;
 }
 
-// The sun at (azimuth, elevation) in degrees under `sky` (lighting.h's names).
-inline shading::Lighting sun_at(double azimuth_deg, double elevation_deg, const std::string& sky = "uniform") {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = sky;
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
+using skylit::testing::sun_at;  // lighting_test_util.h
 
 // Gentle hills at 4 m texels (256 × 200 unless told), and a balloon-sized sphere 25 m above texel (i, j): a deep
 // sky shadow whose reach (the cull budget's, ~320 m) covers a third of the field's width,

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "lighting_test_util.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "shading/reference_renderer.h"
@@ -17,14 +18,9 @@
 namespace skylit::shading {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using ::skylit::testing::sun_at;  // lighting_test_util.h
 
-Lighting sun_at(double azimuth_deg, double elevation_deg) {
-  LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  return resolve_lighting(r, std::nullopt).lighting;
-}
+constexpr double kPi = std::numbers::pi;
 
 ProductOptions options(bool exact = false) {
   ProductOptions o;

@@ -2,6 +2,7 @@
 // compute_product calls with the same lighting bit for bit, whether the visibility is
 // kept from an earlier frame or not; an edit or other horizon options recompute it;
 // frame-independent products come back unchanged; bad inputs get one clear line.
+#include "lighting_test_util.h"
 #include "terrain_test_util.h"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,8 @@
 namespace skylit::shading {
 namespace {
 
+using ::skylit::testing::sun_at;  // lighting_test_util.h
+
 terrain::HeightField small_field() {
   terrain::SyntheticOptions o;
   o.width = 40;
@@ -26,14 +29,6 @@ terrain::HeightField small_field() {
   o.spacing = 30.0;
   o.seed = 3;
   return terrain::make_synthetic_terrain(o);
-}
-
-Lighting lighting_at(double azimuth_deg, double elevation_deg, const std::string& sky = "uniform") {
-  LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = sky;
-  return resolve_lighting(r, std::nullopt).lighting;
 }
 
 ProductOptions small_options() {
@@ -68,7 +63,7 @@ TEST(ReferenceRenderer, SeriesFramesEqualSingleComputesAndReuseTheVisibility) {
   r.set_field(f);
   r.set_options(o);
   r.expect_frames(3);
-  const Lighting suns[] = {lighting_at(90, 10), lighting_at(180, 50, "preetham"), lighting_at(270, 25)};
+  const Lighting suns[] = {sun_at(90, 10), sun_at(180, 50, "preetham"), sun_at(270, 25)};
   for (Product p : {Product::Irradiance, Product::Shaded}) {
     for (int k = 0; k < 3; ++k) {
       const ProductBands got = r.frame(p, {suns[k], {}, std::nullopt});
@@ -85,7 +80,7 @@ TEST(ReferenceRenderer, WithoutTheHintTheSecondFrameStartsKeeping) {
   ReferenceRenderer r;
   r.set_field(f);
   r.set_options(small_options());
-  const FrameInputs in{lighting_at(120, 30), {}, std::nullopt};
+  const FrameInputs in{sun_at(120, 30), {}, std::nullopt};
   r.frame(Product::Irradiance, in);
   EXPECT_FALSE(r.last_timings().horizons_reused);
   r.frame(Product::Irradiance, in);
@@ -101,7 +96,7 @@ TEST(ReferenceRenderer, AnEditOrOtherHorizonOptionsRecompute) {
   r.set_field(f);
   r.set_options(o);
   r.expect_frames(4);
-  const FrameInputs in{lighting_at(200, 20), {}, std::nullopt};
+  const FrameInputs in{sun_at(200, 20), {}, std::nullopt};
   r.frame(Product::Irradiance, in);
   raise(f, {5, 5, 8, 8}, 150.0f);
   const ProductBands edited = r.frame(Product::Irradiance, in);
@@ -127,7 +122,7 @@ TEST(ReferenceRenderer, FrameIndependentProductsComeBackUnchanged) {
   r.set_options(small_options());
   r.expect_frames(2);
   const ProductBands first = r.frame(Product::Svf, {});
-  const ProductBands again = r.frame(Product::Svf, {lighting_at(10, 10), {}, std::nullopt});
+  const ProductBands again = r.frame(Product::Svf, {sun_at(10, 10), {}, std::nullopt});
   EXPECT_TRUE(r.last_timings().horizons_reused);
   EXPECT_TRUE(bit_identical(first, again));
   raise(f, {0, 0, 4, 4}, 300.0f);
@@ -150,11 +145,11 @@ TEST(ReferenceRenderer, BadInputsGetOneClearLine) {
     }
     return std::string("no error");
   };
-  FrameInputs spheres{lighting_at(90, 30), {{{100.0, -100.0, 2000.0}, 20.0}}, std::nullopt};
+  FrameInputs spheres{sun_at(90, 30), {{{100.0, -100.0, 2000.0}, 20.0}}, std::nullopt};
   EXPECT_EQ(message(spheres, Product::Shadow), "no error");
   spheres.spheres[0].radius = 0.0;
   EXPECT_NE(message(spheres, Product::Shadow).find("radius > 0"), std::string::npos);
-  EXPECT_NE(message({lighting_at(90, 30), {}, -1.0}, Product::Shaded).find("exposure"), std::string::npos);
+  EXPECT_NE(message({sun_at(90, 30), {}, -1.0}, Product::Shaded).find("exposure"), std::string::npos);
   EXPECT_NE(message({}, Product::Shadow).find("needs a sun"), std::string::npos);
 }
 

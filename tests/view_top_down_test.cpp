@@ -4,6 +4,7 @@
 // coded on the host as `skylit shade` writes it, and the CPU reference's — and an
 // aircraft's shadow lands where the sun's ray through it meets the ground. llvmpipe
 // where there is no GPU.
+#include "lighting_test_util.h"
 #include "gpu_test_util.h"
 
 #include <gtest/gtest.h>
@@ -22,17 +23,11 @@
 namespace skylit::view {
 namespace {
 
+using ::skylit::testing::sun_at;  // lighting_test_util.h
+
 using shading::Product;
 
 using TopDownTest = gpu::testing::GpuTest;
-
-shading::Lighting lighting_at(double azimuth_deg, double elevation_deg, const std::string& sky) {
-  shading::LightingRequest r;
-  r.sun_azimuth_deg = azimuth_deg;
-  r.sun_elevation_deg = elevation_deg;
-  r.sky = sky;
-  return shading::resolve_lighting(r, std::nullopt).lighting;
-}
 
 shading::ProductOptions options(shading::ToneCurve tone) {
   shading::ProductOptions o;
@@ -113,7 +108,7 @@ TEST_F(TopDownTest, LitColourShadedWithAnAircraftEqualsTheExportRaster) {
   const shading::ProductOptions o = options(shading::ToneCurve::Srgb);
   gpu::GpuRenderer renderer;
   shading::FrameInputs inputs;
-  inputs.lighting = lighting_at(135.0, 30.0, "preetham");
+  inputs.lighting = sun_at(135.0, 30.0, "preetham");
   inputs.spheres = {{{45 * 30.0, -40 * 30.0, 2400.0}, 60.0}};
   const std::vector<std::uint8_t> rgb = top_down(renderer, f, o, inputs);
   renderer.set_field(f);
@@ -164,7 +159,7 @@ TEST_F(TopDownTest, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   const double azimuth = 120.0, elevation = 35.0, height = 300.0;
   const glm::dvec3 centre{80 * 10.0, -80 * 10.0, height};
   shading::FrameInputs lit;
-  lit.lighting = lighting_at(azimuth, elevation, "uniform");
+  lit.lighting = sun_at(azimuth, elevation, "uniform");
   shading::FrameInputs blocked = lit;
   blocked.spheres = {{centre, 40.0}};
   gpu::GpuRenderer renderer;
@@ -201,7 +196,7 @@ struct WithoutAndWith {
 WithoutAndWith looking_north(const terrain::HeightField& f, const glm::dvec3& eye, const blockers::Sphere& sphere,
                              int size, bool curvature = true) {
   shading::FrameInputs without;
-  without.lighting = lighting_at(180.0, 35.0, "uniform");
+  without.lighting = sun_at(180.0, 35.0, "uniform");
   shading::FrameInputs with = without;
   with.spheres = {sphere};
   gpu::GpuRenderer renderer;

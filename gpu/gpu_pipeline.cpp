@@ -287,8 +287,7 @@ void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field,
     sweep.set_uniform("drop", static_cast<float>(o.curvature.drop_per_square_metre() * g.step_m * g.step_m));
     sweep.set_uniform("step_m", static_cast<float>(g.step_m));
     sweep.set_uniform("bounded", bounded ? 1 : 0);
-    // As the CPU: t = (p − p₀)·step_m ≤ D with the exact march's 1e-12 of slack.
-    sweep.set_uniform("limit_steps", static_cast<float>(bounded ? o.max_distance_m * (1.0 + 1e-12) / g.step_m : 0.0));
+    sweep.set_uniform("limit_steps", static_cast<float>(bounded ? horizon::sweep_window_steps(field, g, o) : 0.0));
     for (int first = 0; first < g.lines; first += lanes) {
       sweep.set_uniform("line_offset", first);
       sweep.dispatch_covering(std::min(lanes, g.lines - first));

@@ -42,6 +42,11 @@ bool sweep_bounded(const terrain::HeightField& field, const MarchOptions& o) {
   return o.max_distance_m < std::hypot((field.width - 1) * widest, (field.height - 1) * field.dy);
 }
 
+double sweep_window_steps(const terrain::HeightField& field, const SweepGeometry& g, const MarchOptions& o) {
+  if (!sweep_bounded(field, o)) return std::numeric_limits<double>::infinity();
+  return o.max_distance_m * (1.0 + 1e-12) / g.step_m;  // the exact march stops at t > D·(1 + 1e-12)
+}
+
 double SweepGeometry::line_c(double a, double b) const {
   if (!curved()) return b - r * a;
   return x_dominant ? rows->gamma(b) - r * a : b - r * rows->gamma(a);
@@ -162,20 +167,24 @@ class FarHull {
   std::vector<int> hid_;                      // per push, how many it hid
 };
 
-// The samples within the maximum distance of the observer, as a queue that gains the
-// nearest and loses the farthest: the hull of the newest (Hull) and that of the older
-// ones (FarHull), which takes all of them over when its own run is used up, so every
-// sample is pushed at most twice.
+// The samples within `limit` steps of the observer, as a queue that gains the nearest
+// and loses the farthest: the hull of the newest (Hull) and that of the older ones
+// (FarHull), which takes all of them over when its own run is used up, so every sample
+// is pushed at most twice. An infinite limit (no bound) keeps the newest hull alone.
 struct WindowHulls {
+  double limit = std::numeric_limits<double>::infinity();
   Hull near;
   FarHull far;
-  std::vector<double> n, z;    // the samples entered, farthest first
+  std::vector<double> n, z;    // the samples entered while bounded, farthest first
   std::size_t first = 0;       // the farthest one still within the distance
   std::size_t split = 0;       // samples [first, split) are far's, [split, end) near's
   void clear() { near.clear(), far.clear(), n.clear(), z.clear(), first = split = 0; }
-  void push(double pn, double pz) { near.push(pn, pz), n.push_back(pn), z.push_back(pz); }
+  void push(double pn, double pz) {
+    near.push(pn, pz);
+    if (std::isfinite(limit)) n.push_back(pn), z.push_back(pz);
+  }
   // Drops the samples farther than `limit` steps from n0.
-  void expire(double n0, double limit) {
+  void expire(double n0) {
     while (first < n.size() && n[first] - n0 > limit) {
       if (first == split) {  // far is used up: it takes over near's samples
         far.clear();
@@ -256,10 +265,9 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   const int delay = o.sweep_near_steps + 1;
   std::vector<std::uint16_t> far(field.size(), kFarCodeNone);
   auto point = [&](double a, double b) { return g.x_dominant ? GridPoint{a, b} : GridPoint{b, a}; };
-  // A bounded search: samples farther than D from the observer leave the window, as the
-  // exact march stops at t > D (with its 1e-12 of slack), t = (p − p₀)·step_m.
-  const bool bounded = sweep_bounded(field, o);
-  const double limit_steps = bounded ? o.max_distance_m * (1.0 + 1e-12) / g.step_m : 0.0;
+  // A bounded search: samples farther than D from the observer leave the window,
+  // t = (p − p₀)·step_m.
+  const double window_steps = sweep_window_steps(field, g, o);
   // A line writes only the texels it owns, so lines run on any thread in any order.
   auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
@@ -272,12 +280,12 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
         const double b = bs[m];
         if (b >= -eps && b <= g.extent_b - 1 + eps) {
           const double z = bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m];
-          bounded ? hulls.push(ps[m], z) : hulls.near.push(ps[m], z);
+          hulls.push(ps[m], z);
         }
       }
       if (n % 2 != 0) continue;  // observers sit on whole texels of a
       const double a = g.a_at(n), b = bs[n], pn = ps[n];
-      if (bounded) hulls.expire(pn, limit_steps);
+      hulls.expire(pn);
       for (const double jb : {std::floor(b), std::ceil(b)}) {
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
@@ -291,6 +299,7 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   constexpr int kLinesPerTask = 32;  // a task's hull and samples serve its lines
   parallel::parallel_rows((g.lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
     WindowHulls hulls;
+    hulls.limit = window_steps;
     LineSamples line_samples;
     for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
       sweep_line(line, hulls, line_samples);

@@ -120,6 +120,11 @@ inline constexpr int kFarCodeMax = 2 * kFarCodeHalfRange - 1;  // one more would
 std::uint16_t encode_far_slope(double slope);
 float decode_far_slope(std::uint16_t code);
 
+// The far field's window along g's lines, in steps of g.step_m: the samples within the
+// maximum distance of an observer, as far as the exact march takes them (t ≤ D, with its
+// 1e-12 of slack); +∞ unless sweep_bounded. Shared with horizon_sweep.comp's limit_steps.
+double sweep_window_steps(const terrain::HeightField& field, const SweepGeometry& g, const MarchOptions& options);
+
 // Far-field slope codes of every texel for heading u, [j·width + i]: the max over the
 // texel's owner line's samples n ≥ sweep_near_steps + 1 of (z − t²/(2R) − h₀)/t
 // (t = (n − n₀)·step_m ≤ the maximum distance, if bounded), encode_far_slope'd (kFarCodeNone if none), with the lines

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -238,7 +239,19 @@ void make_north_up(HeightField& f) {
   }
 }
 
-DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemReadOptions& options) {
+std::string stray_nan_warning(std::size_t count, const std::string& name) {
+  return std::to_string(count) + " NaN pixel(s) in '" + name + "' are not the declared nodata value; treated as nodata";
+}
+
+// How read_dataset finishes: read_dem fills the voids and warns of stray NaN itself;
+// a strip of a larger read leaves both to its caller.
+struct ReadControl {
+  bool fill = true;
+  std::size_t* stray_nan = nullptr;  // non-null: add the count here instead of warning
+};
+
+DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemReadOptions& options,
+                           const ReadControl& control = {}) {
   DemReadResult result;
   if (!(std::isfinite(options.z_factor) && options.z_factor > 0))
     throw DemError("invalid z factor " + fmt(options.z_factor) + ": must be a positive number");
@@ -352,9 +365,9 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
       }
   }
   for (const auto& w : capture.warnings()) result.warnings.push_back("GDAL: " + w);
-  if (stray_nan > 0)
-    result.warnings.push_back(std::to_string(stray_nan) + " NaN pixel(s) in '" + name +
-                              "' are not the declared nodata value; treated as nodata");
+  if (control.stray_nan) *control.stray_nan += stray_nan;
+  else if (stray_nan > 0)
+    result.warnings.push_back(stray_nan_warning(stray_nan, name));
 
   result.nodata_count = static_cast<std::size_t>(std::count(f.valid.begin(), f.valid.end(), 0));
   const bool all_nodata = result.nodata_count == n;
@@ -365,7 +378,7 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
 
   make_north_up(f);
   // Voids only (most DEMs have none: no fill's copies and queues of the whole grid).
-  if (result.nodata_count > 0 && !all_nodata) fill_voids(f, options.fill);
+  if (control.fill && result.nodata_count > 0 && !all_nodata) fill_voids(f, options.fill);
   // Outputs need a nodata value wherever the input had voids.
   f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
 
@@ -404,6 +417,69 @@ DemReadResult read_dem(const std::vector<std::string>& paths, const DemReadOptio
 
 DemReadResult read_dem(const std::string& path, const DemReadOptions& options) {
   return read_dem(std::vector<std::string>{path}, options);
+}
+
+DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const DemReadOptions& options, int rows,
+                                 const std::function<void(const HeightField& strip, int first_row)>& sink) {
+  if (options.window) throw DemError("a DEM read in strips cannot also be read in a window");
+  detail::ensure_gdal_registered();
+  const std::vector<std::string> files = expand_inputs(paths);
+  DatasetPtr ds = open_inputs(files);
+  const std::string name = files.size() == 1 ? files[0] : "mosaic of " + std::to_string(files.size()) + " tiles";
+  const int W = ds->GetRasterXSize(), H = ds->GetRasterYSize();
+  DemReadOptions strip_options = options;
+  strip_options.allow_all_nodata = true;
+  std::size_t stray_nan = 0;
+  const ReadControl control{false, &stray_nan};
+  DemReadResult result;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  rows = std::max(rows, 2);  // the reader's minimum
+  for (int y0 = 0; y0 < H;) {
+    int n = std::min(rows, H - y0);
+    if (H - y0 - n == 1) ++n;  // no last strip of one row
+    strip_options.window = PixelRect{0, y0, W, n};
+    DemReadResult strip = read_dataset(*ds, name, strip_options, control);
+    for (auto& w : strip.warnings)
+      if (std::find(result.warnings.begin(), result.warnings.end(), w) == result.warnings.end())
+        result.warnings.push_back(std::move(w));
+    // A south-up file's strips come south first, each turned north up.
+    double file_gt[6];
+    const bool south_up = ds->GetGeoTransform(file_gt) == CE_None && file_gt[5] > 0;
+    const int first_row = south_up ? H - y0 - n : y0;
+    if (y0 == 0) {
+      result.field.georef = strip.field.georef;
+      result.field.georef.geotransform[3] -= first_row * result.field.georef.geotransform[5];
+      result.vertical_unit = strip.vertical_unit;
+    }
+    result.nodata_count += strip.nodata_count;
+    if (strip.nodata_count < strip.field.size()) {
+      lo = std::min(lo, strip.min_height);
+      hi = std::max(hi, strip.max_height);
+    }
+    sink(strip.field, first_row);
+    y0 += n;
+  }
+  if (stray_nan > 0) result.warnings.push_back(stray_nan_warning(stray_nan, name));
+  const std::size_t total = static_cast<std::size_t>(W) * H;
+  if (result.nodata_count == total && !options.allow_all_nodata)
+    throw DemError("'" + name + "' holds no valid height: every pixel is nodata");
+  result.min_height = result.nodata_count == total ? 0.0 : lo;
+  result.max_height = result.nodata_count == total ? 0.0 : hi;
+  result.source_width = W;
+  result.source_height = H;
+  HeightField& f = result.field;
+  f.width = W;
+  f.height = H;
+  int has = 0;
+  const double band_nodata = ds->GetRasterBand(options.band)->GetNoDataValue(&has);
+  const std::optional<double> nodata = options.nodata ? options.nodata : (has ? std::optional<double>(band_nodata) : std::nullopt);
+  f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
+  std::vector<std::string> spacing_warnings;  // the strips gave them already
+  MetricSpacing sp = metric_spacing(f.georef, H, options, spacing_warnings);
+  f.dy = sp.dy;
+  f.dx_per_row = std::move(sp.dx_per_row);
+  f.last_dirty = f.bounds();
+  return result;
 }
 
 DemInfo inspect_dem(const std::vector<std::string>& paths) {

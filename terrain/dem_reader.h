@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -90,6 +91,16 @@ struct DemInfo {
 DemReadResult read_dem(const std::string& path, const DemReadOptions& options = {});
 // Several tiles mosaicked into one grid (GDALBuildVRT; same CRS and band count required).
 DemReadResult read_dem(const std::vector<std::string>& paths, const DemReadOptions& options = {});
+
+// The DEM read a strip of rows at a time, for copies of DEMs too large to hold whole:
+// each strip is read_dem of that window (the same heights, mask and checks) with its
+// voids left unfilled (valid 0, height 0), handed to `sink` with its first row in the
+// north-up DEM (a south-up file's strips come south first). Strips have `rows` rows,
+// or one more where one row would be left. The result is read_dem's without pixels:
+// `field` has the size, georef, spacing and nodata but no heights or mask; warnings,
+// counts and the height range are the whole DEM's. options.window must be empty.
+DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const DemReadOptions& options, int rows,
+                                 const std::function<void(const HeightField& strip, int first_row)>& sink);
 
 DemInfo inspect_dem(const std::string& path);
 DemInfo inspect_dem(const std::vector<std::string>& paths);

@@ -1,4 +1,4 @@
-// Per-zoom height windows: an in-memory copy of the DEM warped by GDAL's warper (the
+// Per-zoom height windows: the DEM's staged copy warped by GDAL's warper (the
 // engine of gdalwarp) onto a zoom's EPSG:3857 pixel grid, through the node-grid
 // transformer of terrain/zoom_transform.h.
 #include "terrain/tile_window.h"
@@ -102,74 +102,40 @@ std::vector<std::string> WarpSettings::arguments() const {
 }
 
 struct TileWindowSource::Impl {
-  explicit Impl(const HeightField& dem) : to_dem(dem.georef) {}
+  explicit Impl(StagedDem staged) : dem(std::move(staged)), to_dem(dem.outline().georef) {}
   void warp_into(GDALDataset& out, long long gx0, long long gy0, long long w, long long h, const WarpSettings& s,
                  int zoom, int tile_size) const;
 
-  DatasetPtr source;                 // MEM, Float32, NaN at voids
-  bool voids = false;
+  StagedDem dem;                     // Float32, NaN at voids
   MercatorToDem to_dem;              // the exact transform, made once (PROJ set-up costs ms)
   Curvature curvature;               // of to_dem over the DEM's widened Mercator box
   std::string mercator_wkt;          // EPSG:3857 as WKT2, the windows' CRS
   double centre_latitude = 0.0;      // degrees
   double resolution_x = 0.0, resolution_y = 0.0;  // ground metres per DEM pixel
   int native_256 = 0, native_512 = 0;
-  std::optional<double> nodata;
 };
 
 namespace {
-const HeightField& checked(const HeightField& dem) {
-  if (dem.georef.crs_wkt.empty())
+StagedDem checked(StagedDem dem) {
+  const HeightField& g = dem.outline();
+  if (g.georef.crs_wkt.empty())
     throw DemError("the DEM has no CRS, so it cannot be warped to web-map tiles (EPSG:3857); assign one first");
-  if (!dem.georef.has_geotransform)
+  if (!g.georef.has_geotransform)
     throw DemError("the DEM has no geotransform, so it cannot be warped to web-map tiles (EPSG:3857)");
   return dem;
 }
 }  // namespace
 
-TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_unique<Impl>(checked(dem))) {
-  const std::size_t n = static_cast<std::size_t>(dem.width) * dem.height;
-  if (dem.width < 1 || dem.height < 1 || dem.heights.size() != n || dem.valid.size() != n ||
-      static_cast<int>(dem.dx_per_row.size()) != dem.height)
-    throw DemError("tile window source: the height field's arrays do not match its size");
+TileWindowSource::TileWindowSource(const HeightField& dem) : TileWindowSource(StagedDem::from_field(dem)) {}
+
+TileWindowSource::TileWindowSource(StagedDem staged) : impl_(std::make_unique<Impl>(checked(std::move(staged)))) {
+  const HeightField& dem = impl_->dem.outline();
   const std::optional<LatLon> centre = grid_centre_lat_lon(dem.georef, dem.width, dem.height);
   impl_->centre_latitude = centre->latitude_deg;  // present: CRS and geotransform checked above
   impl_->resolution_x = dem.dx(dem.height / 2);
   impl_->resolution_y = dem.dy;
   impl_->native_256 = terrain::native_zoom(dem, 256);
   impl_->native_512 = terrain::native_zoom(dem, 512);
-  impl_->nodata = dem.nodata;
-
-  detail::ensure_gdal_registered();
-  GdalErrorCapture capture;
-  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
-  if (!mem) throw DemError("GDAL's MEM driver is missing");
-  impl_->source.reset(mem->Create("", dem.width, dem.height, 1, GDT_Float32, nullptr));
-  if (!impl_->source) throw DemError("cannot create the in-memory DEM copy: " + capture.failure());
-  GDALDataset& ds = *impl_->source;
-  std::array<double, 6> gt = dem.georef.geotransform;
-  if (ds.SetGeoTransform(gt.data()) != CE_None || ds.SetProjection(dem.georef.crs_wkt.c_str()) != CE_None)
-    throw DemError("cannot georeference the in-memory DEM copy: " + capture.failure());
-  const bool voids = std::find(dem.valid.begin(), dem.valid.end(), 0) != dem.valid.end();
-  GDALRasterBand& band = *ds.GetRasterBand(1);
-  if (voids) band.SetNoDataValue(std::numeric_limits<double>::quiet_NaN());
-  impl_->voids = voids;
-  // In strips of rows, NaN at voids: a whole copy of the heights would be 4 B a texel
-  // more at the peak (1 GiB for 16384²).
-  const int strip = std::max(1, (1 << 16) / dem.width);
-  std::vector<float> values;
-  bool written = true;
-  for (int j0 = 0; j0 < dem.height && written; j0 += strip) {
-    const int rows = std::min(strip, dem.height - j0);
-    const std::size_t first = static_cast<std::size_t>(j0) * dem.width, count = static_cast<std::size_t>(rows) * dem.width;
-    values.assign(dem.heights.begin() + first, dem.heights.begin() + first + count);
-    for (std::size_t k = 0; k < count; ++k)
-      if (!dem.valid[first + k]) values[k] = std::numeric_limits<float>::quiet_NaN();
-    written = band.RasterIO(GF_Write, 0, j0, dem.width, rows, values.data(), dem.width, rows, GDT_Float32, 0, 0,
-                            nullptr) == CE_None;
-  }
-  if (!written)
-    throw DemError("cannot fill the in-memory DEM copy: " + capture.failure());
 
   // The curvature over the DEM's box widened by its size on every side: windows reach
   // past the DEM by their halo and the rest of their edge tiles, and only pixels whose
@@ -186,6 +152,8 @@ TileWindowSource::TileWindowSource(const HeightField& dem) : impl_(std::make_uni
   CPLFree(wkt);
 }
 
+const StagedDem& TileWindowSource::dem() const { return impl_->dem; }
+
 // GDAL's warper (the engine of gdalwarp) with the node-grid transformer instead of
 // gdalwarp's exact one; the other settings are WarpSettings::arguments()'s.
 void TileWindowSource::Impl::warp_into(GDALDataset& out, long long gx0, long long gy0, long long w, long long h,
@@ -194,7 +162,7 @@ void TileWindowSource::Impl::warp_into(GDALDataset& out, long long gx0, long lon
   WindowTransformArg arg{&grid, gx0, gy0};
   GdalErrorCapture capture;
   GDALWarpOptions* wo = GDALCreateWarpOptions();
-  wo->hSrcDS = GDALDataset::ToHandle(source.get());
+  wo->hSrcDS = GDALDataset::ToHandle(&dem.dataset());
   wo->hDstDS = GDALDataset::ToHandle(&out);
   wo->nBandCount = 1;
   wo->panSrcBands = static_cast<int*>(CPLMalloc(sizeof(int)));
@@ -205,7 +173,7 @@ void TileWindowSource::Impl::warp_into(GDALDataset& out, long long gx0, long lon
   const double nan = std::numeric_limits<double>::quiet_NaN();
   wo->padfDstNoDataReal = static_cast<double*>(CPLMalloc(sizeof(double)));
   wo->padfDstNoDataReal[0] = nan;
-  if (voids) {
+  if (dem.has_voids()) {
     wo->padfSrcNoDataReal = static_cast<double*>(CPLMalloc(sizeof(double)));
     wo->padfSrcNoDataReal[0] = nan;
   }
@@ -299,7 +267,8 @@ TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOpti
     if (!f.valid[k]) f.heights[k] = 0.0f;
   }
   if (win.valid_count > 0 && win.valid_count < n) fill_voids(f, options.fill);
-  f.nodata = impl_->nodata ? impl_->nodata
+  const std::optional<double>& dem_nodata = impl_->dem.outline().nodata;
+  f.nodata = dem_nodata ? dem_nodata
                            : (win.valid_count < n ? std::optional<double>(-32768.0) : std::nullopt);
 
   f.georef.geotransform = out_gt;

@@ -1,6 +1,6 @@
-// Per-zoom height windows for web-map tiles: the DEM warped (GDAL's warper, in
-// memory) onto zoom z's EPSG:3857 pixel grid over a rectangle of tiles plus a halo
-// of H pixels on every side, as a HeightField the renderer shades directly.
+// Per-zoom height windows for web-map tiles: the DEM's staged copy (staged_dem.h)
+// warped by GDAL's warper onto zoom z's EPSG:3857 pixel grid over a rectangle of tiles
+// plus a halo of H pixels on every side, as a HeightField the renderer shades directly.
 //
 // Policy decisions (tests rely on them):
 //  * Grid: pixel (i, j) of a window over tiles [x0..x1] × [y0..y1] is global pixel
@@ -48,6 +48,7 @@
 
 #include "terrain/dem_reader.h"
 #include "terrain/height_field.h"
+#include "terrain/staged_dem.h"
 #include "terrain/web_mercator.h"
 
 namespace skylit::terrain {
@@ -97,16 +98,18 @@ struct WarpSettings {
   std::vector<std::string> arguments() const;  // -t_srs EPSG:3857 -r … -et 0 -wo …
 };
 
-// The DEM prepared once for many windows (an in-memory float copy with NaN at voids).
-// Not thread-safe: use one source per thread.
+// The DEM prepared once for many windows (terrain/staged_dem.h: a Float32 copy with
+// NaN at voids, in memory or on disk). Not thread-safe: use one source per thread.
 class TileWindowSource {
  public:
   // Throws DemError when the DEM has no CRS or no geotransform, or its CRS is unusable.
-  explicit TileWindowSource(const HeightField& dem);
+  explicit TileWindowSource(StagedDem dem);
+  explicit TileWindowSource(const HeightField& dem);  // staged in memory
   ~TileWindowSource();
   TileWindowSource(TileWindowSource&&) noexcept;
   TileWindowSource& operator=(TileWindowSource&&) noexcept;
 
+  const StagedDem& dem() const;
   int native_zoom(int tile_size = 256) const;
   WarpSettings warp_settings(int zoom, const TileWindowOptions& options = {}) const;
   TileWindow window(const TileRange& tiles, const TileWindowOptions& options = {}) const;

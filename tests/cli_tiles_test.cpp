@@ -369,6 +369,34 @@ TEST_F(Tiles, KilledRunResumedEqualsAnUninterruptedOne) {
   EXPECT_TRUE(folder(part) == folder(out.file("whole")));
 }
 
+// Over --dem-memory the DEM is staged in a temporary file in $TMPDIR: the same tiles and
+// metadata byte for byte, and no file left there, also by a run killed mid-way.
+TEST_F(Tiles, ADemStagedOnDiskGivesTheSameTilesAndLeavesNoFile) {
+  ScratchDir out, temp;
+  tiles("-o " + out.file("memory") + " " + kShaded);
+  const std::string staged = "TMPDIR=" + temp.path().string() + " " + SKYLIT_BINARY + " tiles " + dem() +
+                             " --dem-memory 0 " + kShaded + " -o ";
+  const auto r = run_shell(staged + out.file("disk") + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("staged in a temporary file"), std::string::npos) << r.out;
+  EXPECT_TRUE(folder(out.file("disk")) == folder(out.file("memory")));
+  EXPECT_TRUE(temp.listing().empty());
+
+  const std::string part = out.file("killed");
+  pid_t pid = 0;
+  const std::string exec_cmd = "exec env " + staged + part + " -q";
+  const char* argv[] = {"/bin/sh", "-c", exec_cmd.c_str(), nullptr};
+  ASSERT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline && (!fs::exists(part) || folder_tiles(part).empty()))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it was killed";
+  EXPECT_TRUE(temp.listing().empty());
+}
+
 TEST_F(Tiles, ResumeWithOtherOptionsFailsInOneLineAndChangesNothing) {
   for (const std::string name : {"folder", "t.mbtiles", "t.pmtiles"}) {
     SCOPED_TRACE(name);

@@ -205,6 +205,34 @@ TEST(TileWindow, MatchesGdalwarpOnAGeographicDemWithVoids) {
   EXPECT_EQ(win.field.nodata, dem.field.nodata);
 }
 
+// A DEM staged on disk (as `skylit tiles` stages one over its memory limit) gives the
+// windows of the in-memory copy, bit for bit: geographic, with voids, at two zooms.
+TEST(TileWindow, AWindowFromTheDiskCopyEqualsTheInMemoryOne) {
+  const std::string path = dem_path("luxembourg_elev_4326.tif");
+  REQUIRE_FILE(path);
+  ScratchDir temp;
+  StagingOptions disk;
+  disk.memory_limit_bytes = 0;
+  disk.directory = temp.path();
+  disk.strip_pixels = 4096;
+  std::vector<std::string> warnings;
+  const TileWindowSource on_disk(StagedDem::read({path}, {}, disk, warnings));
+  const TileWindowSource in_memory(read_dem(path).field);
+  ASSERT_TRUE(on_disk.dem().on_disk());
+  for (int z : {8, 10}) {
+    const TileRange tiles = tiles_covering(LonLatBox{5.9, 49.6, 6.2, 49.9}, z);
+    const TileWindowOptions opt{.halo = 6};
+    const TileWindow a = on_disk.window(tiles, opt), b = in_memory.window(tiles, opt);
+    ASSERT_GT(a.valid_count, 0u);
+    ASSERT_LT(a.valid_count, a.field.size()) << "the window should reach a void";
+    EXPECT_EQ(a.valid_count, b.valid_count) << "z " << z;
+    EXPECT_TRUE(a.field.heights == b.field.heights) << "z " << z;
+    EXPECT_TRUE(a.field.valid == b.field.valid) << "z " << z;
+    EXPECT_EQ(a.field.nodata, b.field.nodata);
+  }
+  EXPECT_TRUE(temp.listing().empty());
+}
+
 // Every global pixel held by both windows: same validity, the same height bit for bit
 // (the transform is a function of global pixel coordinates alone, zoom_transform.h).
 void expect_seamless(const TileWindow& a, const TileWindow& b, bool shares_data = true) {

@@ -43,10 +43,20 @@ bool sky_only_default(const LightingArgs& args) {
   return args.no_sun && l.time.empty() && !l.sun_azimuth_deg && !l.sun_elevation_deg && l.sky == "uniform";
 }
 
-std::optional<sky::Observer> dem_place(const terrain::HeightField& field) {
-  const auto at = terrain::grid_centre_lat_lon(field.georef, field.width, field.height);
+namespace {
+std::optional<sky::Observer> centre_of(const terrain::HeightField& grid, float height) {
+  const auto at = terrain::grid_centre_lat_lon(grid.georef, grid.width, grid.height);
   if (!at) return std::nullopt;
-  return sky::Observer{at->latitude_deg, at->longitude_deg, field.at(field.width / 2, field.height / 2)};
+  return sky::Observer{at->latitude_deg, at->longitude_deg, height};
+}
+}  // namespace
+
+std::optional<sky::Observer> dem_place(const terrain::HeightField& field) {
+  return centre_of(field, field.at(field.width / 2, field.height / 2));
+}
+
+std::optional<sky::Observer> dem_place(const terrain::StagedDem& dem) {
+  return centre_of(dem.outline(), dem.centre_height());
 }
 
 sky::Observer sun_place(const shading::LightingRequest& request, const terrain::HeightField& field) {

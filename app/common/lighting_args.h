@@ -11,6 +11,7 @@
 #include "shading/lighting.h"
 #include "shading/products.h"
 #include "terrain/height_field.h"
+#include "terrain/staged_dem.h"
 
 namespace skylit::app {
 
@@ -35,6 +36,7 @@ bool sky_only_default(const LightingArgs& args);
 
 // The DEM's centre (WGS 84) and height there, for the sun's position; nullopt without a CRS.
 std::optional<sky::Observer> dem_place(const terrain::HeightField& field);
+std::optional<sky::Observer> dem_place(const terrain::StagedDem& dem);  // a DEM not held whole
 
 // Where a clock's sun is seen from: the request's --lat/--lon (at its height), else the
 // DEM's centre. Throws std::invalid_argument (one line) when there is neither.

@@ -49,6 +49,7 @@ struct TilesArgs {
   std::string quality = "default";
   std::string name;
   std::string webviewer = "none";
+  double dem_memory_mib = 512;
   LightingArgs light;
 };
 
@@ -108,13 +109,22 @@ void choose_product(const TilesArgs& a, TileJob& job) {
                                 "' (shaded, hillshade, skyview, svf, shadow, irradiance, terrain-rgb, terrarium)");
 }
 
-terrain::HeightField read_input(const TilesArgs& a) {
+// The DEM staged for the warper a strip at a time: in memory, or on disk above
+// --dem-memory, so that the run's peak memory does not grow with the DEM.
+terrain::StagedDem read_input(const TilesArgs& a) {
   if (a.inputs.empty()) throw std::invalid_argument("no DEM given");
   terrain::cap_gdal_cache_for_streaming();
-  auto result = a.inputs.size() == 1 ? terrain::read_dem(a.inputs.front()) : terrain::read_dem(a.inputs);
-  if (!a.quiet)
-    for (const auto& w : result.warnings) std::cerr << "skylit: warning: " << w << "\n";
-  return std::move(result.field);
+  terrain::StagingOptions staging;
+  staging.memory_limit_bytes = static_cast<std::size_t>(a.dem_memory_mib * 1024 * 1024);
+  std::vector<std::string> warnings;
+  terrain::StagedDem dem = terrain::StagedDem::read(a.inputs, {}, staging, warnings);
+  if (!a.quiet) {
+    for (const auto& w : warnings) std::cerr << "skylit: warning: " << w << "\n";
+    if (dem.on_disk())
+      std::cerr << "skylit: note: the DEM (" << dem.outline().width << "x" << dem.outline().height
+                << ") is staged in a temporary file, over --dem-memory " << a.dem_memory_mib << " MiB\n";
+  }
+  return dem;
 }
 
 int run_tiles(const TilesArgs& a) {
@@ -159,8 +169,8 @@ int run_tiles(const TilesArgs& a) {
       job.options.hillshade = shade::hillshade_options({}, 1.0, request.sun_azimuth_deg, request.sun_elevation_deg, true);
   }
 
-  const terrain::HeightField dem = read_input(a);
-  const terrain::TileWindowSource source(dem);  // a DEM without a CRS fails here
+  const terrain::TileWindowSource source(read_input(a));  // a DEM without a CRS fails here
+  const terrain::HeightField& dem = source.dem().outline();
   const terrain::ZoomRange zooms = parse_zoom(a.zoom, source.native_zoom(a.tile_size));
   const terrain::LonLatBox ll = terrain::dem_lon_lat_bounds(dem);
   const terrain::MercatorBox box = terrain::dem_mercator_bounds(dem);
@@ -173,13 +183,12 @@ int run_tiles(const TilesArgs& a) {
     all.insert(all.end(), b.begin(), b.end());
   }
   const std::vector<Block> mine = shard_blocks(all, shard);
-  if (std::none_of(dem.valid.begin(), dem.valid.end(), [](std::uint8_t v) { return v != 0; }))
-    throw std::invalid_argument("nothing to render: the DEM has no valid heights");
+  if (source.dem().valid_count() == 0) throw std::invalid_argument("nothing to render: the DEM has no valid heights");
   if (mine.empty())
     throw std::invalid_argument("nothing to render: shard " + a.shard + " gets none of the " + std::to_string(all.size()) +
                                 " window blocks; use fewer shards");
   if (lit) {
-    const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(dem) : std::nullopt);
+    const auto resolved = shading::resolve_lighting(request, shading::needs_place(request) ? dem_place(source.dem()) : std::nullopt);
     job.options.lighting = resolved.lighting;
     if (!a.quiet) std::cerr << "skylit: " << resolved.summary << "\n";
   }
@@ -273,6 +282,10 @@ void add_tiles_command(CLI::App& root, Action& run) {
                   "leaflet: an index.html showing the tiles on a Leaflet map (beside a .pmtiles file, inside a "
                   "folder; Leaflet and pmtiles.js inlined) | none")
       ->check(CLI::IsMember({"none", "leaflet"}))->capture_default_str();
+  cmd->add_option("--dem-memory", a->dem_memory_mib,
+                  "Largest DEM copy held in memory, MiB; a larger DEM is staged in a temporary GeoTIFF in $TMPDIR "
+                  "(4 B a pixel, deleted once open) and read a block at a time")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_flag("-e,--resume", a->resume, "Complete an interrupted run: keep its finished tiles");
   cmd->add_flag("--overwrite", a->overwrite, "Replace OUT if it exists");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or notes");

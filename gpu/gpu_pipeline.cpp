@@ -919,6 +919,12 @@ void GpuProductPipeline::set_exposure(double exposure) {
     mImpl->display_per_irradiance = shading::shaded_display_scale(mOptions.shaded, *mOptions.lighting);
 }
 
+void GpuProductPipeline::set_region(const terrain::PixelRect& region) {
+  if (region == mOptions.march.region) return;
+  mOptions.march.region = region;
+  drop_visibility();  // computed for another region
+}
+
 void GpuProductPipeline::keep_visibility(bool keep) { mImpl->keep_vis = keep; }
 
 void GpuProductPipeline::set_refresh_budget(std::size_t texels_per_frame) { mImpl->refresh_budget = texels_per_frame; }
@@ -955,6 +961,7 @@ void GpuProductPipeline::drop_visibility() {
   k.vis = Buffer();
   k.kept_horizons = Buffer();
   k.vis_valid = false;
+  k.sun_far_valid = false;
   k.frames = 0;
 }
 

@@ -88,6 +88,8 @@ class GpuProductPipeline {
   // and the exposure of `shaded`.
   void set_lighting(const shading::Lighting& lighting);
   void set_exposure(double exposure);
+  // The texels whose horizons are wanted (MarchOptions::region; not baked in).
+  void set_region(const terrain::PixelRect& region);
   // `shaded` and `irradiance`: keep the visibility (SH_COEFFS floats per texel) of a
   // compute() for the next ones on the same field revision, which then skip the
   // horizons and the visibility. Off: the second compute() starts keeping. A field too
@@ -96,6 +98,7 @@ class GpuProductPipeline {
   // A blocked pipeline's spheres for the next compute()s (field frame: FrameInputs).
   // Blocked frames keep no visibility: the spheres' horizon cull reads the horizons.
   void set_spheres(std::span<const blockers::Sphere> spheres);
+  // Forgets the kept visibility and the sun's kept far slopes.
   void drop_visibility();
   // Incremental refresh of the kept visibility after an edit (gpu/visibility_refresh.h).
   // With a budget > 0, the compute() after one edit of a kept field (revision one past the

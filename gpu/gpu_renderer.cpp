@@ -32,9 +32,11 @@ std::unique_ptr<HeadlessContext> make_context(double& ms) {
 }
 
 // Options that give the same compiled pipeline: the kernels bake in the horizon and
-// shading options, the lighting's shape and the blockers' merge angle and log* table
-// (gpu_blockers.h); the albedo is applied on the host.
-bool same_pipeline(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b, bool blocked) {
+// shading options (not the wanted region, which only says what a frame computes), the
+// lighting's shape and the blockers' merge angle and log* table (gpu_blockers.h); the
+// albedo is applied on the host.
+bool same_pipeline(Product product, const shading::ProductOptions& a, shading::ProductOptions b, bool blocked) {
+  b.march.region = a.march.region;
   return shading::same_horizon_options(a, b) && same_baked_lighting(product, a, b) &&
          a.shaded.albedo == b.shaded.albedo &&
          (!blocked || (a.blockers.merge_sin == b.blockers.merge_sin &&
@@ -112,6 +114,7 @@ GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::Product
   if (blocked) pipeline.set_spheres(inputs.spheres);
   if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
   pipeline.set_exposure(options.shaded.exposure);
+  pipeline.set_region(options.march.region);
   pipeline.keep_visibility(keep_);
   pipeline.set_refresh_budget(refresh_budget_);
   pipeline.set_sun_heading_tolerance(sun_heading_tolerance_);

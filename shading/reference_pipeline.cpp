@@ -85,6 +85,7 @@ SunShadowOptions sun_shadow_options(const ProductOptions& o) {
   s.threads = o.threads;
   s.march.curvature = o.march.curvature;
   s.march.max_distance_m = o.march.max_distance_m;
+  s.march.region = o.march.region;
   if (o.exact) {
     s.horizon = SunHorizon::Exact;
     s.exact = horizon::ExactMarch{o.exact_options.step_texels, o.march.max_distance_m, o.march.curvature};

@@ -53,6 +53,7 @@ bool same_horizon_options(const ProductOptions& a, const ProductOptions& b) {
          m.level_interpolation == n.level_interpolation && m.curvature.enabled == n.curvature.enabled &&
          m.curvature.radius_m == n.curvature.radius_m && m.curvature.refraction_k == n.curvature.refraction_k &&
          m.method == n.method && m.sweep_near_steps == n.sweep_near_steps && m.sweep_lines == n.sweep_lines &&
+         m.region == n.region &&
          a.exact == b.exact && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
          a.exact_options.step_texels == b.exact_options.step_texels && a.subsample == b.subsample &&
          a.shaded.mode == b.shaded.mode && a.shaded.sh_order == b.shaded.sh_order &&

@@ -307,6 +307,37 @@ TEST(HorizonSweep, WindowsOfOneRasterSweepTheSameLines) {
   EXPECT_GT(off_unaligned, compared / 10);
 }
 
+TEST(HorizonSweep, AWantedRegionGetsTheWholeFieldsCodesAndTheRestIsSkipped) {
+  // Projected and geographic rows, unbounded and bounded: the region's texels get the
+  // codes of the sweep without one, bit for bit; most texels away from it are skipped.
+  HeightField projected = rough_field(90, 70, 30.0, 20.0, 30.0, 21, 200.0), geographic = projected;
+  make_geographic(geographic, 30.0, 50.0, 51.2);
+  const terrain::PixelRect region{23, 17, 31, 25};
+  for (const HeightField* f : {&projected, &geographic})
+    for (double d : {0.0, 400.0})
+      for (int lines : {1, 2}) {
+        MarchOptions o = sweep_options(4, lines, 6.371e6), wanted = o;
+        o.max_distance_m = wanted.max_distance_m = d;
+        wanted.region = region;
+        std::size_t outside = 0, skipped = 0;
+        for (double deg : kHeadings) {
+          const Heading u = heading_deg(deg);
+          const auto all = sweep_far_slopes(*f, u, o, 0), part = sweep_far_slopes(*f, u, wanted, 0);
+          for (int j = 0; j < f->height; ++j)
+            for (int i = 0; i < f->width; ++i) {
+              const std::size_t t = static_cast<std::size_t>(j) * f->width + i;
+              if (i >= region.x0 && i < region.x1() && j >= region.y0 && j < region.y1()) {
+                ASSERT_EQ(part[t], all[t]) << case_name("region", deg, 4, lines) << " D" << d << " at " << i << "," << j;
+              } else if (all[t] != kFarCodeNone) {
+                ++outside;
+                skipped += part[t] == kFarCodeNone;
+              }
+            }
+        }
+        EXPECT_GT(skipped, outside / 2) << (f == &geographic ? "geographic" : "projected") << " D" << d;
+      }
+}
+
 TEST(HorizonSweep, ThreadsSplitTheLinesWithoutChangingACode) {
   // Hundreds of lines, so every thread takes several tasks of 32 lines.
   const HeightField f = rough_field(230, 170, 30.0, 20.0, 30.0, 3, 200.0);

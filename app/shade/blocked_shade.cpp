@@ -133,6 +133,10 @@ void run_blocked_shade(const BlockedShade& job, const BlockPlan& plan, const ter
       void_cores.push_back(block.core);
     } else {
       const terrain::HeightField& field = dem_block.field;
+      // Horizons only for the core: the halo around it holds blockers.
+      options.march.region = {block.core.x0 - block.read.x0, block.core.y0 - block.read.y0, block.core.width,
+                              block.core.height};
+      renderer.set_options(options);
       renderer.set_field(field);
       const shading::FrameInputs inputs{job.lighting, to_field_frame(field, job.crs_spheres), std::nullopt};
       shading::ProductBands bands = renderer.frame(job.product, inputs,

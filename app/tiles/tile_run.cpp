@@ -73,6 +73,8 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     if (job.product) {
       shading::ProductOptions opt = job.options;
       opt.march.max_distance_m = plan.max_distance_m;
+      // Horizons only for the tiles' pixels: the halo around them holds blockers.
+      opt.march.region = {window.halo, window.halo, b.tiles.columns() * job.tile_size, b.tiles.rows() * job.tile_size};
       renderer->set_field(window.field);
       renderer->set_options(opt);
       bands = renderer->frame(*job.product, {opt.lighting, {}, std::nullopt});

@@ -18,6 +18,8 @@ void validate(const MarchOptions& o) {
     throw std::invalid_argument("march: Earth radius must be > 0 and refraction k < 1");
   if (o.sweep_near_steps < 0) throw std::invalid_argument("sweep: near steps must be ≥ 0");
   if (o.sweep_lines < 1) throw std::invalid_argument("sweep: lines per texel must be ≥ 1");
+  if (!o.region.empty() && (o.region.x0 < 0 || o.region.y0 < 0))
+    throw std::invalid_argument("march: the wanted region must not start at a negative texel");
 }
 
 std::vector<HorizonMethod> all_horizon_methods() { return {HorizonMethod::March, HorizonMethod::Sweep}; }

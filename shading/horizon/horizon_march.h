@@ -60,6 +60,10 @@ struct MarchOptions {
   HorizonMethod method = HorizonMethod::Sweep;
   int sweep_near_steps = 4;  // K: half-texel steps each texel takes along its own ray
   int sweep_lines = 1;       // sweep lines per texel across the heading (1/Δc)
+  // The texels whose horizons are wanted (empty: all). The sweep skips the lines that
+  // own none of them and the samples that reach none of them; the others' far slopes are
+  // then left unset (kFarCodeNone). A window's halo is only blockers (tiles, blocks).
+  terrain::PixelRect region{};
 };
 
 // How a step reads heights, as `skylit shade --levels` and the bench name it:

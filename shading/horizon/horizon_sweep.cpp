@@ -252,6 +252,37 @@ void fill_line(const SweepGeometry& g, double c, LineSamples& out) {
   for (int n = 0; n < g.samples; ++n) out.p[n] = (out.b[n] - out.b[0]) / (g.r * g.delta_a);
 }
 
+// The lines owning a wanted texel and the samples where wanted observers sit (all of
+// them for an empty region): owner() and a_at() are monotone in each coordinate, so the
+// region's corners bound both.
+struct Wanted {
+  int line_low = 0, line_high = -1;
+  int n_low = 0, n_high = -1;
+};
+
+Wanted wanted_lines(const terrain::HeightField& field, const SweepGeometry& g, const terrain::PixelRect& region) {
+  terrain::PixelRect r = region.empty() ? field.bounds() : region;
+  r.width = std::min(r.x1(), field.width) - r.x0;
+  r.height = std::min(r.y1(), field.height) - r.y0;
+  Wanted w;
+  if (r.empty()) return w;
+  w.line_low = g.lines - 1;
+  w.line_high = 0;
+  w.n_low = g.samples - 1;
+  w.n_high = 0;
+  for (const int i : {r.x0, r.x1() - 1})
+    for (const int j : {r.y0, r.y1() - 1}) {
+      const double a = g.x_dominant ? i : j, b = g.x_dominant ? j : i;
+      const int line = std::clamp(g.owner(a, b), 0, g.lines - 1);
+      w.line_low = std::min(w.line_low, line);
+      w.line_high = std::max(w.line_high, line);
+      const int n = static_cast<int>(std::lround((a - g.a_at(0)) / g.delta_a));
+      w.n_low = std::min(w.n_low, n);
+      w.n_high = std::max(w.n_high, n);
+    }
+  return w;
+}
+
 }  // namespace
 
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o,
@@ -268,13 +299,22 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   // A bounded search: samples farther than D from the observer leave the window,
   // t = (p − p₀)·step_m.
   const double window_steps = sweep_window_steps(field, g, o);
+  const Wanted wanted = wanted_lines(field, g, o.region);
   // A line writes only the texels it owns, so lines run on any thread in any order.
   auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
     fill_line(g, c, line_samples);
     const std::vector<double>&bs = line_samples.b, &ps = line_samples.p;
     hulls.clear();
-    for (int n = g.samples - 1; n >= 0; --n) {
+    // Observers n_low … n_high are wanted; they see samples up to the window's length
+    // past n_high (all of them unbounded), which enter the hull `delay` steps earlier.
+    int top = g.samples - 1;
+    if (std::isfinite(window_steps)) {
+      int last = wanted.n_high;
+      while (last + 1 < g.samples && ps[last + 1] - ps[wanted.n_high] <= window_steps) ++last;
+      top = std::min(top, std::max(wanted.n_high, last - delay));
+    }
+    for (int n = top; n >= wanted.n_low; --n) {
       // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).
       if (const int m = n + delay; m < g.samples) {
         const double b = bs[m];
@@ -283,7 +323,7 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
           hulls.push(ps[m], z);
         }
       }
-      if (n % 2 != 0) continue;  // observers sit on whole texels of a
+      if (n % 2 != 0 || n > wanted.n_high) continue;  // observers sit on whole texels of a
       const double a = g.a_at(n), b = bs[n], pn = ps[n];
       hulls.expire(pn);
       for (const double jb : {std::floor(b), std::ceil(b)}) {
@@ -297,11 +337,13 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
     }
   };
   constexpr int kLinesPerTask = 32;  // a task's hull and samples serve its lines
-  parallel::parallel_rows((g.lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
+  const int lines = wanted.line_high - wanted.line_low + 1;
+  parallel::parallel_rows((lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
     WindowHulls hulls;
     hulls.limit = window_steps;
     LineSamples line_samples;
-    for (int line = t * kLinesPerTask; line < std::min(g.lines, (t + 1) * kLinesPerTask); ++line)
+    const int first = wanted.line_low + t * kLinesPerTask;
+    for (int line = first; line < std::min(wanted.line_high + 1, first + kLinesPerTask); ++line)
       sweep_line(line, hulls, line_samples);
   });
   return far;

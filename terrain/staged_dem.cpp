@@ -117,7 +117,8 @@ StagedDem StagedDem::from_field(const HeightField& field) {
 }
 
 StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOptions& read,
-                          const StagingOptions& staging, std::vector<std::string>& warnings) {
+                          const StagingOptions& staging, std::vector<std::string>& warnings,
+                          const std::function<void(double)>& progress) {
   const DemInfo info = inspect_dem(paths);
   const std::size_t pixels = static_cast<std::size_t>(info.width) * info.height;
   auto impl = std::make_unique<Impl>();
@@ -127,6 +128,7 @@ StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOp
   std::vector<float> values;
   const int rows = static_cast<int>(std::max<std::size_t>(1, staging.strip_pixels / std::max(1, info.width)));
   DemReadResult whole;
+  std::size_t rows_read = 0;
   try {
     whole = read_dem_in_strips(paths, read, rows, [&](const HeightField& strip, int first_row) {
       if (!impl->dataset) impl->dataset = create(path, info.width, info.height);
@@ -135,6 +137,8 @@ StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOp
         impl->centre_height = strip.at(cx, cy - first_row);
       else if (cy >= first_row && cy < first_row + strip.height)
         impl->centre_height = std::numeric_limits<float>::quiet_NaN();
+      rows_read += static_cast<std::size_t>(strip.height);
+      if (progress) progress(static_cast<double>(rows_read) / info.height);
     });
     describe(*impl->dataset, whole.field.georef, whole.nodata_count > 0);
   } catch (...) {

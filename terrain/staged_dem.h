@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,10 +40,12 @@ class StagedDem {
  public:
   // The field's heights in memory (tests, and callers that hold the field anyway).
   static StagedDem from_field(const HeightField& field);
-  // The DEM read a strip at a time (read_dem_in_strips); warnings are appended. Throws
-  // DemError as read_dem does, and when the copy cannot be written.
+  // The DEM read a strip at a time (read_dem_in_strips); warnings are appended, and
+  // `progress` gets the fraction of rows read after each strip. Throws DemError as
+  // read_dem does, and when the copy cannot be written.
   static StagedDem read(const std::vector<std::string>& paths, const DemReadOptions& read,
-                        const StagingOptions& staging, std::vector<std::string>& warnings);
+                        const StagingOptions& staging, std::vector<std::string>& warnings,
+                        const std::function<void(double)>& progress = {});
 
   ~StagedDem();
   StagedDem(StagedDem&&) noexcept;

@@ -115,13 +115,16 @@ struct TileWindowSource::Impl {
   int native_256 = 0, native_512 = 0;
 };
 
+void check_warpable(const GeoReference& georef) {
+  if (georef.crs_wkt.empty())
+    throw DemError("the DEM has no CRS, so it cannot be warped to web-map tiles (EPSG:3857); assign one first");
+  if (!georef.has_geotransform)
+    throw DemError("the DEM has no geotransform, so it cannot be warped to web-map tiles (EPSG:3857)");
+}
+
 namespace {
 StagedDem checked(StagedDem dem) {
-  const HeightField& g = dem.outline();
-  if (g.georef.crs_wkt.empty())
-    throw DemError("the DEM has no CRS, so it cannot be warped to web-map tiles (EPSG:3857); assign one first");
-  if (!g.georef.has_geotransform)
-    throw DemError("the DEM has no geotransform, so it cannot be warped to web-map tiles (EPSG:3857)");
+  check_warpable(dem.outline().georef);
   return dem;
 }
 }  // namespace

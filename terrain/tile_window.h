@@ -98,6 +98,10 @@ struct WarpSettings {
   std::vector<std::string> arguments() const;  // -t_srs EPSG:3857 -r … -et 0 -wo …
 };
 
+// Throws DemError (one line) unless a DEM with this georeference can be warped to
+// EPSG:3857: it needs a CRS and a geotransform.
+void check_warpable(const GeoReference& georef);
+
 // The DEM prepared once for many windows (terrain/staged_dem.h: a Float32 copy with
 // NaN at voids, in memory or on disk). Not thread-safe: use one source per thread.
 class TileWindowSource {

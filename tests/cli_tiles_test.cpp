@@ -549,7 +549,7 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
       {dem() + " -o " + out.file("t.pmtiles") + " --shard 3/2", "--shard '3/2'"},
       {dem() + " -o " + out.file("t.pmtiles") + " --shard 0/0", "--shard '0/0'"},
       {dem() + " -o " + out.file("t.pmtiles") + " --shard a/b", "--shard 'a/b'"},
-      {nocrs + " -o " + out.file("t.pmtiles"), "no CRS"},
+      {nocrs + " -o " + out.file("t.pmtiles"), "no CRS, so it cannot be warped to web-map tiles"},
       {dem() + " -o " + out.file("t.pmtiles") + " --zoom 10 --shard 2/2", "nothing to render"},
       {dem() + " -o " + out.file("t.pmtiles") + " --format gif", "png, webp or jpeg"},
       {dem() + " -o " + out.file("t.mbtiles") + " --tms", "--tms"},

@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/common/lighting_args.h"
+#include "app/common/progress.h"
 #include "app/shade/hillshade_args.h"
 #include "app/tiles/merge_cmd.h"
 #include "app/tiles/run_fingerprint.h"
@@ -114,10 +115,13 @@ void choose_product(const TilesArgs& a, TileJob& job) {
 terrain::StagedDem read_input(const TilesArgs& a) {
   if (a.inputs.empty()) throw std::invalid_argument("no DEM given");
   terrain::cap_gdal_cache_for_streaming();
+  terrain::check_warpable(terrain::inspect_dem(a.inputs).georef);  // before the reader asks for a scale
   terrain::StagingOptions staging;
   staging.memory_limit_bytes = static_cast<std::size_t>(a.dem_memory_mib * 1024 * 1024);
   std::vector<std::string> warnings;
-  terrain::StagedDem dem = terrain::StagedDem::read(a.inputs, {}, staging, warnings);
+  ProgressBar bar("reading the DEM", a.quiet);
+  terrain::StagedDem dem = terrain::StagedDem::read(a.inputs, {}, staging, warnings, [&bar](double f) { bar.update(f); });
+  bar.finish();
   if (!a.quiet) {
     for (const auto& w : warnings) std::cerr << "skylit: warning: " << w << "\n";
     if (dem.on_disk())

@@ -61,6 +61,21 @@ void write_strip(GDALDataset& ds, const HeightField& strip, int first_row, std::
                    capture.failure("disk full?"));
 }
 
+std::string megabytes(std::uintmax_t bytes) { return std::to_string((bytes + (1u << 19)) >> 20) + " MiB"; }
+
+// A full disk shows only when GDAL flushes its cache, as a TIFF error: say so before.
+void check_space(const std::filesystem::path& dir, std::uintmax_t bytes) {
+  std::error_code ec;
+  const std::filesystem::space_info space = std::filesystem::space(dir, ec);
+  if (ec)
+    throw DemError("cannot stage the DEM in '" + dir.string() + "': " + ec.message(), "memory_limit_bytes");
+  const std::uintmax_t need = bytes + bytes / 64 + (std::uintmax_t{1} << 20);  // and the TIFF's block tables
+  if (space.available < need)
+    throw DemError("the DEM's staged copy needs " + megabytes(need) + " in '" + dir.string() + "', which has " +
+                       megabytes(space.available) + " free",
+                   "memory_limit_bytes");
+}
+
 }  // namespace
 
 struct StagedDem::Impl {
@@ -124,6 +139,7 @@ StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOp
   auto impl = std::make_unique<Impl>();
   impl->on_disk = pixels * sizeof(float) > staging.memory_limit_bytes;
   const std::filesystem::path path = impl->on_disk ? staging_path(staging) : std::filesystem::path();
+  if (impl->on_disk) check_space(path.parent_path(), pixels * sizeof(float));
   const int cx = info.width / 2, cy = info.height / 2;
   std::vector<float> values;
   const int rows = static_cast<int>(std::max<std::size_t>(1, staging.strip_pixels / std::max(1, info.width)));
@@ -158,8 +174,9 @@ StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOp
     std::filesystem::remove(path, ec);
     std::filesystem::remove(path.string() + ".aux.xml", ec);
     if (!impl->dataset)
-      throw DemError("cannot write or reopen the DEM's staged copy '" + path.string() + "': " +
-                     capture.failure("disk full?"));
+      throw DemError("cannot write or reopen the DEM's staged copy '" + path.string() + "' (is its disk full?): " +
+                         capture.failure(),
+                     "memory_limit_bytes");
   }
   warnings.insert(warnings.end(), whole.warnings.begin(), whole.warnings.end());
   impl->outline = std::move(whole.field);

@@ -15,8 +15,9 @@ struct Flag {
   std::string_view after;   // or after it ("… with -s/--scale")
 };
 
-// terrain::DemReadOptions: the remedy follows the message.
-constexpr Flag kDemFlags[] = {{"scale", "", " with -s/--scale"}};
+// terrain::DemReadOptions and StagingOptions: the remedy follows the message.
+constexpr Flag kDemFlags[] = {{"scale", "", " with -s/--scale"},
+                              {"memory_limit_bytes", "", "; set TMPDIR to a larger disk, or raise --dem-memory"}};
 // terrain::RasterWriteOptions.
 constexpr Flag kWriteFlags[] = {{"overwrite", "", " (pass --overwrite to replace it)"}};
 // shading::LightingRequest: the flag at fault comes first.

@@ -206,7 +206,7 @@ TEST(StagedDem, AReadThatFailsHalfWayLeavesNoFile) {
   } catch (const DemError& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-    EXPECT_NE(m.find("cannot create the DEM's staged copy"), std::string::npos) << m;
+    EXPECT_NE(m.find("cannot stage the DEM in"), std::string::npos) << m;
   }
 }
 

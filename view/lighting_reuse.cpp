@@ -17,8 +17,10 @@ bool close(const sky::Rgb& kept, const sky::Rgb& fresh) {
 
 }  // namespace
 
-LightingReuse::LightingReuse(double max_sun_angle_rad) : max_angle_(max_sun_angle_rad) {
-  if (!(max_sun_angle_rad >= 0.0)) throw std::invalid_argument("LightingReuse: the sun's angle must be ≥ 0");
+LightingReuse::LightingReuse(double max_sun_angle_rad, double max_sky_angle_rad)
+    : max_angle_(max_sun_angle_rad), max_sky_angle_(max_sky_angle_rad) {
+  if (!(max_sun_angle_rad >= 0.0 && max_sky_angle_rad >= max_sun_angle_rad))
+    throw std::invalid_argument("LightingReuse: the angles must be ≥ 0, the sky's at least the sun's");
 }
 
 shading::Lighting LightingReuse::next(const shading::LightingRequest& request, shading::Lighting fresh) {
@@ -28,7 +30,7 @@ shading::Lighting LightingReuse::next(const shading::LightingRequest& request, s
   timeless.sun_azimuth_deg.reset();
   timeless.sun_elevation_deg.reset();
   if (made_ && request_ == timeless && made_->sky && fresh.sky && made_->colour == fresh.colour &&
-      angle_between(made_->sun.direction, fresh.sun.direction) <= max_angle_) {
+      angle_between(made_->sun.direction, fresh.sun.direction) <= max_sky_angle_) {
     if (angle_between(last_->sun.direction, fresh.sun.direction) <= max_angle_ && close(last_->sun.dni, fresh.sun.dni) &&
         close(last_->reference_irradiance, fresh.reference_irradiance))
       return *last_;

@@ -46,9 +46,14 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
 CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration);
 
 // How far the sun may move before the frame's sun slopes (GpuRenderer::
-// set_sun_heading_tolerance), lighting and sky model (LightingReuse, view/lighting_reuse.h)
-// are made again.
+// set_sun_heading_tolerance) and lighting (LightingReuse, view/lighting_reuse.h) are
+// made again.
 inline constexpr double kSunTolerance = shading::kFrameSunTolerance;
+// How far the sun may move from where the sky model was made before it is made again:
+// the sky's radiance follows the sun slowly (at 0.5° a texel's irradiance moves by
+// under 1e-3 of the brightest one: view_lighting_reuse_test), and remaking it (its
+// tables and each texel's sky irradiance) cost as much as sweeping the sun's slopes.
+inline constexpr double kSkyTolerance = 10.0 * kSunTolerance;
 
 struct ViewFrame {
   shading::FrameInputs shading;  // the sun and sky, the aircraft's spheres, exposure

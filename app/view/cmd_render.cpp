@@ -111,7 +111,7 @@ int run_render(const RenderArgs& a) {
   shading::ProductOptions options;
   options.shaded.tone = tone_curve(a.light);
   sv::SceneView scene(renderer, field, options);
-  sv::LightingReuse lighting_reuse(sv::kSunTolerance);
+  sv::LightingReuse lighting_reuse(sv::kSunTolerance, sv::kSkyTolerance);
   sv::OffscreenTarget target(width, height);
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
   if (mode) rig.set_mode(*mode);

@@ -125,7 +125,7 @@ class Viewer {
   std::optional<shade::TrackedAircraft> aircraft_;
   GlfwWindow window_;
   gpu::GpuRenderer renderer_;
-  sv::LightingReuse lighting_reuse_{sv::kSunTolerance};
+  sv::LightingReuse lighting_reuse_{sv::kSunTolerance, sv::kSkyTolerance};
   shading::ProductOptions options_;
   std::unique_ptr<sv::SceneView> scene_;
   double exaggeration_;

@@ -32,12 +32,11 @@ std::unique_ptr<HeadlessContext> make_context(double& ms) {
 }
 
 // Options that give the same compiled pipeline: the kernels bake in the horizon and
-// shading options (not the wanted region, which only says what a frame computes), the
+// shading options (not the wanted region: GpuProductPipeline::set_region), the
 // lighting's shape and the blockers' merge angle and log* table (gpu_blockers.h); the
 // albedo is applied on the host.
-bool same_pipeline(Product product, const shading::ProductOptions& a, shading::ProductOptions b, bool blocked) {
-  b.march.region = a.march.region;
-  return shading::same_horizon_options(a, b) && same_baked_lighting(product, a, b) &&
+bool same_pipeline(Product product, const shading::ProductOptions& a, const shading::ProductOptions& b, bool blocked) {
+  return shading::same_baked_horizon_options(a, b) && same_baked_lighting(product, a, b) &&
          a.shaded.albedo == b.shaded.albedo &&
          (!blocked || (a.blockers.merge_sin == b.blockers.merge_sin &&
                        a.blockers.blocker.log_clip == b.blockers.blocker.log_clip));

@@ -47,13 +47,16 @@ std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inp
 }
 
 bool same_horizon_options(const ProductOptions& a, const ProductOptions& b) {
+  return same_baked_horizon_options(a, b) && a.march.region == b.march.region;
+}
+
+bool same_baked_horizon_options(const ProductOptions& a, const ProductOptions& b) {
   const horizon::MarchOptions &m = a.march, &n = b.march;
   return m.azimuths == n.azimuths && m.k_v == n.k_v && m.levels == n.levels && m.level_offset == n.level_offset &&
          m.max_distance_m == n.max_distance_m && m.smooth_max == n.smooth_max && m.use_pyramid == n.use_pyramid &&
          m.level_interpolation == n.level_interpolation && m.curvature.enabled == n.curvature.enabled &&
          m.curvature.radius_m == n.curvature.radius_m && m.curvature.refraction_k == n.curvature.refraction_k &&
          m.method == n.method && m.sweep_near_steps == n.sweep_near_steps && m.sweep_lines == n.sweep_lines &&
-         m.region == n.region &&
          a.exact == b.exact && a.exact_options.sky_azimuths == b.exact_options.sky_azimuths &&
          a.exact_options.step_texels == b.exact_options.step_texels && a.subsample == b.subsample &&
          a.shaded.mode == b.shaded.mode && a.shaded.sh_order == b.shaded.sh_order &&

@@ -156,6 +156,9 @@ std::optional<ProductBands> night_shadow(Product product, const FrameInputs& inp
 // field that reaches the march, the sweep or the visibility's SH (not the lighting,
 // exposure, albedo or threads).
 bool same_horizon_options(const ProductOptions& a, const ProductOptions& b);
+// The same but for the wanted region (MarchOptions::region): what a GPU pipeline bakes
+// into its kernels; the region only says which texels a frame computes.
+bool same_baked_horizon_options(const ProductOptions& a, const ProductOptions& b);
 
 // Keeps the last bands of products that depend on nothing per frame (horizon, svf,
 // skyview), for the field revision and options they were computed for.

@@ -239,6 +239,18 @@ void make_north_up(HeightField& f) {
   }
 }
 
+// The band's nodata value, or options.nodata over it.
+std::optional<double> declared_nodata(GDALRasterBand& band, const DemReadOptions& options) {
+  if (options.nodata) return options.nodata;
+  int has = 0;
+  const double value = band.GetNoDataValue(&has);
+  return has ? std::optional<double>(value) : std::nullopt;
+}
+
+DemError no_valid_height(const std::string& name) {
+  return DemError("'" + name + "' holds no valid height: every pixel is nodata");
+}
+
 std::string stray_nan_warning(std::size_t count, const std::string& name) {
   return std::to_string(count) + " NaN pixel(s) in '" + name + "' are not the declared nodata value; treated as nodata";
 }
@@ -291,10 +303,7 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
   gt[3] += win.y0 * gt[5];
 
   GDALRasterBand& band = *ds.GetRasterBand(options.band);
-  int has_nodata = 0;
-  const double band_nodata = band.GetNoDataValue(&has_nodata);
-  const std::optional<double> nodata =
-      options.nodata ? options.nodata : (has_nodata ? std::optional<double>(band_nodata) : std::nullopt);
+  const std::optional<double> nodata = declared_nodata(band, options);
   int has_scale = 0, has_offset = 0;
   const double scale = band.GetScale(&has_scale);
   const double offset = band.GetOffset(&has_offset);
@@ -371,16 +380,14 @@ DemReadResult read_dataset(GDALDataset& ds, const std::string& name, const DemRe
 
   result.nodata_count = static_cast<std::size_t>(std::count(f.valid.begin(), f.valid.end(), 0));
   const bool all_nodata = result.nodata_count == n;
-  if (all_nodata && !options.allow_all_nodata)
-    throw DemError("'" + name + "' holds no valid height: every pixel is nodata");
+  if (all_nodata && !options.allow_all_nodata) throw no_valid_height(name);
   result.min_height = all_nodata ? 0.0 : lo;
   result.max_height = all_nodata ? 0.0 : hi;
 
   make_north_up(f);
   // Voids only (most DEMs have none: no fill's copies and queues of the whole grid).
   if (control.fill && result.nodata_count > 0 && !all_nodata) fill_voids(f, options.fill);
-  // Outputs need a nodata value wherever the input had voids.
-  f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
+  f.nodata = nodata_for_outputs(nodata, result.nodata_count > 0);
 
   MetricSpacing sp = metric_spacing(f.georef, f.height, options, result.warnings);
   f.dy = sp.dy;
@@ -434,6 +441,9 @@ DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const De
   DemReadResult result;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   rows = std::max(rows, 2);  // the reader's minimum
+  // A south-up file's strips come south first, each turned north up.
+  double file_gt[6];
+  const bool south_up = ds->GetGeoTransform(file_gt) == CE_None && file_gt[5] > 0;
   for (int y0 = 0; y0 < H;) {
     int n = std::min(rows, H - y0);
     if (H - y0 - n == 1) ++n;  // no last strip of one row
@@ -442,9 +452,6 @@ DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const De
     for (auto& w : strip.warnings)
       if (std::find(result.warnings.begin(), result.warnings.end(), w) == result.warnings.end())
         result.warnings.push_back(std::move(w));
-    // A south-up file's strips come south first, each turned north up.
-    double file_gt[6];
-    const bool south_up = ds->GetGeoTransform(file_gt) == CE_None && file_gt[5] > 0;
     const int first_row = south_up ? H - y0 - n : y0;
     if (y0 == 0) {
       result.field.georef = strip.field.georef;
@@ -461,8 +468,7 @@ DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const De
   }
   if (stray_nan > 0) result.warnings.push_back(stray_nan_warning(stray_nan, name));
   const std::size_t total = static_cast<std::size_t>(W) * H;
-  if (result.nodata_count == total && !options.allow_all_nodata)
-    throw DemError("'" + name + "' holds no valid height: every pixel is nodata");
+  if (result.nodata_count == total && !options.allow_all_nodata) throw no_valid_height(name);
   result.min_height = result.nodata_count == total ? 0.0 : lo;
   result.max_height = result.nodata_count == total ? 0.0 : hi;
   result.source_width = W;
@@ -470,10 +476,7 @@ DemReadResult read_dem_in_strips(const std::vector<std::string>& paths, const De
   HeightField& f = result.field;
   f.width = W;
   f.height = H;
-  int has = 0;
-  const double band_nodata = ds->GetRasterBand(options.band)->GetNoDataValue(&has);
-  const std::optional<double> nodata = options.nodata ? options.nodata : (has ? std::optional<double>(band_nodata) : std::nullopt);
-  f.nodata = nodata ? nodata : (result.nodata_count > 0 ? std::optional<double>(-32768.0) : std::nullopt);
+  f.nodata = nodata_for_outputs(declared_nodata(*ds->GetRasterBand(options.band), options), result.nodata_count > 0);
   std::vector<std::string> spacing_warnings;  // the strips gave them already
   MetricSpacing sp = metric_spacing(f.georef, H, options, spacing_warnings);
   f.dy = sp.dy;
@@ -490,6 +493,10 @@ DemInfo inspect_dem(const std::vector<std::string>& paths) {
   if (files.size() > 1) info.bands -= 1;  // the mosaic's alpha band is ours, not the data's
   info.files = std::move(files);
   return info;
+}
+
+std::optional<double> nodata_for_outputs(std::optional<double> declared, bool voids) {
+  return declared ? declared : (voids ? std::optional<double>(-32768.0) : std::nullopt);
 }
 
 void cap_gdal_cache_for_streaming() {

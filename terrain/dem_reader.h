@@ -109,6 +109,10 @@ DemInfo inspect_dem(const std::vector<std::string>& paths);
 // mask is unchanged. Needs at least one valid texel (throws DemError otherwise).
 void fill_voids(HeightField& field, VoidFill fill);
 
+// The nodata value outputs write (policy above): the declared one, else −32768 where
+// there are voids, else none.
+std::optional<double> nodata_for_outputs(std::optional<double> declared, bool voids);
+
 // Caps GDAL's block cache at 256 MiB unless GDAL_CACHEMAX is set, for runs that read a
 // large DEM once (in blocks, or whole for tiles): GDAL's default, 5 % of RAM, would fill
 // with blocks that are never read again and raise the peak memory by as much.

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "terrain/gdal_util.h"
 
@@ -49,14 +50,16 @@ void describe(GDALDataset& ds, const GeoReference& georef, bool voids) {
     throw DemError("cannot georeference the DEM's staged copy: " + capture.failure());
 }
 
-// The strip's heights at rows first_row… of `ds`, NaN at its voids.
-void write_strip(GDALDataset& ds, const HeightField& strip, int first_row, std::vector<float>& values) {
-  values.assign(strip.heights.begin(), strip.heights.end());
+// Rows first_row… of `ds` (`width` wide), NaN where not valid; `values` is scratch.
+void write_rows(GDALDataset& ds, std::span<const float> heights, std::span<const std::uint8_t> valid, int width,
+                int first_row, std::vector<float>& values) {
+  values.assign(heights.begin(), heights.end());
   for (std::size_t k = 0; k < values.size(); ++k)
-    if (!strip.valid[k]) values[k] = std::numeric_limits<float>::quiet_NaN();
+    if (!valid[k]) values[k] = std::numeric_limits<float>::quiet_NaN();
+  const int rows = static_cast<int>(values.size() / width);
   GdalErrorCapture capture;
-  if (ds.GetRasterBand(1)->RasterIO(GF_Write, 0, first_row, strip.width, strip.height, values.data(), strip.width,
-                                    strip.height, GDT_Float32, 0, 0, nullptr) != CE_None)
+  if (ds.GetRasterBand(1)->RasterIO(GF_Write, 0, first_row, width, rows, values.data(), width, rows, GDT_Float32, 0,
+                                    0, nullptr) != CE_None)
     throw DemError("cannot write the DEM's staged copy (rows " + std::to_string(first_row) + "…): " +
                    capture.failure("disk full?"));
 }
@@ -115,14 +118,10 @@ StagedDem StagedDem::from_field(const HeightField& field) {
   const int rows = static_cast<int>(std::max<std::size_t>(1, StagingOptions{}.strip_pixels / field.width));
   std::vector<float> values;
   for (int j0 = 0; j0 < field.height; j0 += rows) {
-    HeightField strip;
-    strip.width = field.width;
-    strip.height = std::min(rows, field.height - j0);
     const std::size_t first = static_cast<std::size_t>(j0) * field.width;
-    const std::size_t count = static_cast<std::size_t>(strip.height) * field.width;
-    strip.heights.assign(field.heights.begin() + first, field.heights.begin() + first + count);
-    strip.valid.assign(field.valid.begin() + first, field.valid.begin() + first + count);
-    write_strip(*impl->dataset, strip, j0, values);
+    const std::size_t count = static_cast<std::size_t>(std::min(rows, field.height - j0)) * field.width;
+    write_rows(*impl->dataset, std::span(field.heights).subspan(first, count),
+               std::span(field.valid).subspan(first, count), field.width, j0, values);
   }
   describe(*impl->dataset, field.georef, impl->valid_count < n);
   impl->outline = field;
@@ -148,7 +147,7 @@ StagedDem StagedDem::read(const std::vector<std::string>& paths, const DemReadOp
   try {
     whole = read_dem_in_strips(paths, read, rows, [&](const HeightField& strip, int first_row) {
       if (!impl->dataset) impl->dataset = create(path, info.width, info.height);
-      write_strip(*impl->dataset, strip, first_row, values);
+      write_rows(*impl->dataset, strip.heights, strip.valid, strip.width, first_row, values);
       if (cy >= first_row && cy < first_row + strip.height && strip.is_valid(cx, cy - first_row))
         impl->centre_height = strip.at(cx, cy - first_row);
       else if (cy >= first_row && cy < first_row + strip.height)

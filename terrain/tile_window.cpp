@@ -270,9 +270,7 @@ TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOpti
     if (!f.valid[k]) f.heights[k] = 0.0f;
   }
   if (win.valid_count > 0 && win.valid_count < n) fill_voids(f, options.fill);
-  const std::optional<double>& dem_nodata = impl_->dem.outline().nodata;
-  f.nodata = dem_nodata ? dem_nodata
-                           : (win.valid_count < n ? std::optional<double>(-32768.0) : std::nullopt);
+  f.nodata = nodata_for_outputs(impl_->dem.outline().nodata, win.valid_count < n);
 
   f.georef.geotransform = out_gt;
   f.georef.crs_wkt = impl_->mercator_wkt;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 using skylit::testing::count_lines;
 using skylit::testing::OutputRaster;
@@ -174,6 +175,15 @@ TEST(CliShade, BadInputFailsCleanly) {
   expect_clean_shade_failure(dir, hill + " -o " + dir.file("out.xyz"), "format");
   expect_clean_shade_failure(dir, hill + out + " -p bogus", "bogus");
   expect_clean_shade_failure(dir, hill + out + " --backend cuda", "cuda");
+  // Options bounded by their sign say so in a short line (CLI11's own checks print their
+  // range up to DBL_MAX, 300 digits).
+  for (const auto& [arg, needle] : {std::pair{" --zfactor 0", "--zfactor: must be greater than 0, not 0"},
+                                    std::pair{" --max-distance -5", "--max-distance: must be 0 or more, not -5"},
+                                    std::pair{" --exposure nan", "--exposure: expected a finite number, not 'nan'"},
+                                    std::pair{" --xscale ten", "--xscale: expected a number, not 'ten'"}}) {
+    expect_clean_shade_failure(dir, hill + out + arg, needle);
+    EXPECT_LT(run_skylit("shade " + hill + out + arg, true).out.size(), 120u) << arg;
+  }
   expect_clean_shade_failure(dir, out, "INPUT");
   expect_clean_shade_failure(dir, hill + " " + hill + " " + dir.file("out.tif") + " --synthetic" + out, "--synthetic");
 }

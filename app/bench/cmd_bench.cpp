@@ -6,6 +6,7 @@
 #include "app/bench/bench_output.h"
 #include "app/bench/bench_run.h"
 #include "app/bench/svg_plot.h"
+#include "app/common/sign_checks.h"
 #include "app/common/text_file.h"
 #include "app/commands.h"
 #include "gpu/renderer_factory.h"
@@ -106,7 +107,7 @@ void add_bench_command(CLI::App& root, Action& run) {
       ->capture_default_str();
   cmd->add_option("--truth-max-size", args->config.truth_max_size,
                   "Largest scene side that gets the brute-force ground truth (larger: errors NA)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_option("--truth-backend", args->config.truth_backend,
                   "Backend of the ground truth (the CPU reference is the oracle; gpu is faster)")
       ->capture_default_str();

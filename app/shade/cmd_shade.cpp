@@ -4,6 +4,7 @@
 // sky, sun) is resolved before any computation, so its errors cost nothing.
 #include "app/commands.h"
 #include "app/common/progress.h"
+#include "app/common/sign_checks.h"
 #include "app/shade/blocked_shade.h"
 #include "app/shade/color_relief_cmd.h"
 #include "app/shade/hillshade_args.h"
@@ -480,13 +481,13 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "sun-hours (hours of direct sun over --time)")
       ->capture_default_str();
   cmd->add_option("--of,-f", args->format, "Output format: GTiff, COG, PNG (default: from the extension)");
-  cmd->add_option("-b,--band", args->band, "Input band (gdaldem -b)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("-b,--band", args->band, "Input band (gdaldem -b)")->check(app::positive_number())->capture_default_str();
   cmd->add_option("--nodata", args->nodata, "Input nodata value, overriding the DEM's (gdaldem has none)");
   cmd->add_option("--co", args->creation_options, "Creation option NAME=VALUE (repeatable)");
-  cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(CLI::PositiveNumber)->capture_default_str();
-  cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(CLI::PositiveNumber);
-  cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(CLI::PositiveNumber);
-  cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(CLI::PositiveNumber);
+  cmd->add_option("-z,--zfactor", args->z_factor, "Vertical exaggeration")->check(app::positive_number())->capture_default_str();
+  cmd->add_option("-s,--scale", args->scale, "Metres per horizontal map unit (as gdaldem -s)")->check(app::positive_number());
+  cmd->add_option("--xscale", args->xscale, "Metres per map unit east-west")->check(app::positive_number());
+  cmd->add_option("--yscale", args->yscale, "Metres per map unit north-south")->check(app::positive_number());
   cmd->add_option("--quality", args->quality,
                   "Preset from the measured speed/error front: fast | default | high "
                   "(docs/quality-presets.md); explicit --azimuths/--kv/--level-offset/--levels/--horizon-max/--horizons/"
@@ -514,7 +515,7 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_flag("--exact", args->options.exact, "Brute-force ground truth: dense half-texel marching, dense sky integral");
   cmd->add_flag("--no-curvature", args->no_curvature, "Disable the Earth-curvature correction");
   cmd->add_option("--max-distance", args->options.march.max_distance_m, "Maximum marching distance in metres (0: the DEM extent)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_option("--levels", args->levels,
                   "How march steps read the height pyramid: bspline (cubic B-spline, NS09) | bilinear (4 samples "
                   "instead of 16) | none (no pyramid: level-0 heights, bilinear); docs/accuracy.md")
@@ -543,7 +544,7 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--level-offset", args->options.march.level_offset, "Pyramid level offset o_v")->capture_default_str();
   cmd->add_option("--sh-order", args->options.shaded.sh_order, "SH order n of the visibility (shaded)")->check(CLI::Range(2, 8))->capture_default_str();
   cmd->add_option("--nlp-order", args->options.shaded.nlp_order, "NLP order N >= n of the slices (shaded)")->check(CLI::Range(2, 16))->capture_default_str();
-  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the tone curve (shaded)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--exposure", args->options.shaded.exposure, "Linear exposure before the tone curve (shaded)")->check(app::positive_number())->capture_default_str();
   add_lighting_options(*cmd, args->light,
                   "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z or "
                   "2026-06-21T09:30:00-07:00 (place: the DEM's centre, or --lat/--lon); a series: an interval "

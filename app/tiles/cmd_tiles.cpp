@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/common/lighting_args.h"
 #include "app/common/progress.h"
+#include "app/common/sign_checks.h"
 #include "app/shade/hillshade_args.h"
 #include "app/tiles/merge_cmd.h"
 #include "app/tiles/run_fingerprint.h"
@@ -272,7 +273,7 @@ void add_tiles_command(CLI::App& root, Action& run) {
   cmd->add_option("--halo", a->halo, "Window halo in pixels (default: from --max-distance, docs/tiles.md)");
   cmd->add_option("--max-distance", a->max_distance,
                   "Horizon search distance in ground metres (default 5000, or what --halo holds)")
-      ->check(CLI::PositiveNumber);
+      ->check(app::positive_number());
   cmd->add_option("--shard", a->shard, "Render shard i of N (1-based, i/N): a cost-balanced share of the window blocks")
       ->capture_default_str();
   cmd->add_option("--quality", a->quality, "Preset: fast | default | high (docs/quality-presets.md)")
@@ -289,7 +290,7 @@ void add_tiles_command(CLI::App& root, Action& run) {
   cmd->add_option("--dem-memory", a->dem_memory_mib,
                   "Largest DEM copy held in memory, MiB; a larger DEM is staged in a temporary GeoTIFF in $TMPDIR "
                   "(4 B a pixel, deleted once open) and read a block at a time")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_flag("-e,--resume", a->resume, "Complete an interrupted run: keep its finished tiles");
   cmd->add_flag("--overwrite", a->overwrite, "Replace OUT if it exists");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or notes");

@@ -94,31 +94,40 @@ SweepGeometry sweep_geometry(const terrain::HeightField& field, Heading u, int l
 namespace {
 
 // Upper convex hull of the samples passed, nearest on top (Andrew's monotone chain).
-// Positions n are in steps: slopes per step, divided by step_m by the caller.
+// Positions n are in steps: slopes per step, divided by step_m by the caller. Vertices
+// live in one buffer sized for a whole line (reserve), so a push is no allocation.
 class Hull {
  public:
-  void clear() { n_.clear(), z_.clear(); }
-  // Adds a sample nearer than every one held.
+  void reserve(std::size_t samples) {
+    if (v_.size() < samples) v_.resize(samples);
+  }
+  void clear() { size_ = 0; }
+  // Adds a sample nearer than every one held (at most `reserve`d of them).
   void push(double n, double z) {
-    while (n_.size() >= 2) {
-      const std::size_t top = n_.size() - 1;
+    while (size_ >= 2) {
+      const Vertex& top = v_[size_ - 1];
+      const Vertex& below = v_[size_ - 2];
       // Keep top only if strictly above the chord from (n, z) to the one below it.
-      if ((z_[top] - z) * (n_[top - 1] - n) > (z_[top - 1] - z) * (n_[top] - n)) break;
-      n_.pop_back(), z_.pop_back();
+      if ((top.z - z) * (below.n - n) > (below.z - z) * (top.n - n)) break;
+      --size_;
     }
-    n_.push_back(n), z_.push_back(z);
+    v_[size_++] = {n, z};
   }
   // max over the hull of (Z − z0)/(n − n0), for n0 nearer than every sample; −∞ if empty.
   double max_slope(double n0, double z0) const {
-    if (n_.empty()) return -std::numeric_limits<double>::infinity();
-    std::size_t k = n_.size() - 1;
+    if (size_ == 0) return -std::numeric_limits<double>::infinity();
+    std::size_t k = size_ - 1;
     // Slopes rise then fall along a convex chain: walk away while they rise.
-    while (k > 0 && (z_[k - 1] - z0) * (n_[k] - n0) >= (z_[k] - z0) * (n_[k - 1] - n0)) --k;
-    return (z_[k] - z0) / (n_[k] - n0);
+    while (k > 0 && (v_[k - 1].z - z0) * (v_[k].n - n0) >= (v_[k].z - z0) * (v_[k - 1].n - n0)) --k;
+    return (v_[k].z - z0) / (v_[k].n - n0);
   }
 
  private:
-  std::vector<double> n_, z_;
+  struct Vertex {
+    double n, z;
+  };
+  std::vector<Vertex> v_;
+  std::size_t size_ = 0;
 };
 
 // Upper convex hull of a run of samples that loses its farthest one as the search's far
@@ -300,6 +309,7 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   // t = (p − p₀)·step_m.
   const double window_steps = sweep_window_steps(field, g, o);
   const Wanted wanted = wanted_lines(field, g, o.region);
+  const double owner_reach = 0.5 * g.spacing() + 1e-6;  // spacing/2, with room for the rounding of b and c
   // A line writes only the texels it owns, so lines run on any thread in any order.
   auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
@@ -314,7 +324,16 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
       while (last + 1 < g.samples && ps[last + 1] - ps[wanted.n_high] <= window_steps) ++last;
       top = std::min(top, std::max(wanted.n_high, last - delay));
     }
-    for (int n = top; n >= wanted.n_low; --n) {
+    // b is monotone along a line: only the run of samples beside the grid (b within a
+    // texel of it) holds observers or samples; it starts `delay` steps earlier for pushes.
+    auto beside = [&](int n) { return bs[n] > -1.0 - 1e-6 && bs[n] < g.extent_b + 1e-6; };
+    int beside_low = 0, beside_high = g.samples - 1;
+    while (beside_low < g.samples && !beside(beside_low)) ++beside_low;
+    if (beside_low == g.samples) return;  // the line misses the grid
+    while (!beside(beside_high)) --beside_high;
+    top = std::min(top, beside_high);
+    const int bottom = std::max(wanted.n_low, beside_low - delay);
+    for (int n = top; n >= bottom; --n) {
       // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).
       if (const int m = n + delay; m < g.samples) {
         const double b = bs[m];
@@ -326,13 +345,21 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
       if (n % 2 != 0 || n > wanted.n_high) continue;  // observers sit on whole texels of a
       const double a = g.a_at(n), b = bs[n], pn = ps[n];
       hulls.expire(pn);
-      for (const double jb : {std::floor(b), std::ceil(b)}) {
+      // The texels beside b, the nearer first. On straight lines a texel is this line's
+      // only within spacing/2 of b (owner() rounds c = jb − r·a, and b = c_line + r·a),
+      // and one at most: most observers are settled without owner().
+      const double nearest = std::floor(b + 0.5);
+      const double other = b < nearest ? nearest - 1.0 : nearest + 1.0;
+      for (const double jb : {nearest, other}) {
+        if (jb == other && b == nearest) break;  // b whole: one texel beside it
+        if (!g.curved() && std::abs(jb - b) > owner_reach) break;
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
         const int i = static_cast<int>(q.x), j = static_cast<int>(q.y);
         // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
         const double slope = hulls.max_slope(pn, field.at(i, j) - pn * drop * pn);
         far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
+        if (!g.curved()) break;
       }
     }
   };
@@ -341,6 +368,7 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   parallel::parallel_rows((lines + kLinesPerTask - 1) / kLinesPerTask, threads, [&](int t) {
     WindowHulls hulls;
     hulls.limit = window_steps;
+    hulls.near.reserve(static_cast<std::size_t>(g.samples));
     LineSamples line_samples;
     const int first = wanted.line_low + t * kLinesPerTask;
     for (int line = first; line < std::min(wanted.line_high + 1, first + kLinesPerTask); ++line)

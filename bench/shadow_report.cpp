@@ -118,7 +118,10 @@ std::vector<Method> methods() {
   for (int w : {16, 32, 64})
     m.push_back({"(b) W=" + std::to_string(w) + ", level 0, k_v=32", interpolated(shading::sun_march_options(), w), true});
   // (c) the horizon sweep in the sun's azimuth (projected DEMs; geographic ones march).
-  for (const auto& [k, lines, core] : {std::tuple{4, 1, true}, std::tuple{4, 2, true}, std::tuple{8, 3, false}}) {
+  for (const auto& [k, lines, core] : {std::tuple{4, 1, true}, std::tuple{4, 2, true}, std::tuple{8, 3, false},
+                                               // near steps for lines: what each costs is in docs/accuracy.md
+                                               std::tuple{8, 2, false}, std::tuple{16, 2, false}, std::tuple{16, 1, false},
+                                               std::tuple{32, 1, false}, std::tuple{16, 3, false}}) {
     SunShadowOptions o;
     o.horizon = SunHorizon::Swept;
     o.march.method = horizon::HorizonMethod::Sweep;

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -133,6 +134,19 @@ std::set<Tile> covering(double west, double south, double east, double north, in
   return out;
 }
 
+// gdalinfo's WGS 84 extent of a raster: west, south, east, north.
+std::array<double, 4> wgs84_extent(const std::string& raster) {
+  const auto info = nlohmann::json::parse(capture("gdalinfo -json " + raster));
+  std::array<double, 4> box{180, 90, -180, -90};
+  for (const auto& p : info["wgs84Extent"]["coordinates"][0]) {
+    box[0] = std::min(box[0], p[0].get<double>());
+    box[2] = std::max(box[2], p[0].get<double>());
+    box[1] = std::min(box[1], p[1].get<double>());
+    box[3] = std::max(box[3], p[1].get<double>());
+  }
+  return box;
+}
+
 int sh(const std::string& cmd) { return std::system((cmd + " >/dev/null 2>&1").c_str()); }
 
 // The crop every test tiles, made once with gdal_translate.
@@ -176,14 +190,7 @@ TEST_F(Tiles, TileSetIsTheCoveringOfGdalinfosExtentAndRerunsAreByteIdentical) {
   ScratchDir out;
   tiles("-o " + out.file("a") + " " + kShaded);
   tiles("-o " + out.file("b") + " " + kShaded);
-  const auto info = nlohmann::json::parse(capture("gdalinfo -json " + dem()));
-  double w = 180, s = 90, e = -180, n = -90;
-  for (const auto& p : info["wgs84Extent"]["coordinates"][0]) {
-    w = std::min(w, p[0].get<double>());
-    e = std::max(e, p[0].get<double>());
-    s = std::min(s, p[1].get<double>());
-    n = std::max(n, p[1].get<double>());
-  }
+  const auto [w, s, e, n] = wgs84_extent(dem());
   std::set<Tile> expected;
   for (int z = 11; z <= 12; ++z) expected.merge(covering(w, s, e, n, z));
   EXPECT_EQ(folder_tiles(out.file("a")), expected);
@@ -535,6 +542,27 @@ std::string write_dem_without_crs(const ScratchDir& dir) {
   return path;
 }
 
+// A zoom range that covers the DEM with more tiles than --max-tiles is refused before
+// any work, with the count; at the count itself the run goes ahead.
+TEST_F(Tiles, AZoomRangeOverMaxTilesIsRefusedWithItsCount) {
+  const auto [w, s, e, n] = wgs84_extent(dem());
+  std::size_t count = 0;
+  for (int z = 10; z <= 13; ++z) count += covering(w, s, e, n, z).size();
+  ScratchDir out;
+  const auto r = run_skylit("tiles " + dem() + " -o " + out.file("t.pmtiles") + " " + kHillshade + " --max-tiles " +
+                                std::to_string(count - 1) + " -q",
+                            true);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("zooms 10-13 cover the DEM with " + std::to_string(count) + " tiles, over --max-tiles " +
+                       std::to_string(count - 1)),
+            std::string::npos)
+      << r.out;
+  EXPECT_TRUE(fs::is_empty(out.path())) << "a refused run left files behind";
+  tiles("-o " + out.file("t.pmtiles") + " " + kHillshade + " --max-tiles " + std::to_string(count));
+  EXPECT_TRUE(fs::exists(out.file("t.pmtiles")));
+}
+
 TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
   ScratchDir out;
   const std::string nocrs = write_dem_without_crs(out);
@@ -554,6 +582,7 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
       {dem() + " -o " + out.file("t.pmtiles") + " --format gif", "png, webp or jpeg"},
       {dem() + " -o " + out.file("t.mbtiles") + " --tms", "--tms"},
       {dem() + " -o " + out.file("t.pmtiles") + " -p horizon", "unknown -p"},
+      {dem() + " -o " + out.file("t.pmtiles") + " --zoom 20-24", "raise --max-tiles"},  // 5·10⁶ tiles of a 5 km crop
   };
   for (const auto& [args, needle] : cases) {
     const auto r = run_skylit("tiles " + args + " -q", true);

@@ -3,6 +3,7 @@
 // Every check that can fail is made before the archive is opened, so a bad run leaves
 // no output behind.
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -52,6 +53,7 @@ struct TilesArgs {
   std::string name;
   std::string webviewer = "none";
   double dem_memory_mib = 512;
+  std::uint64_t max_tiles = 1'000'000;  // about a day's work on 2 cores: a zoom range past what was meant
   LightingArgs light;
 };
 
@@ -182,9 +184,19 @@ int run_tiles(const TilesArgs& a) {
   const double poleward = std::max(std::abs(ll.south), std::abs(ll.north));
   std::vector<ZoomPlan> plans;
   std::vector<Block> all;
+  std::uint64_t tile_count = 0;
   for (int z = zooms.min; z <= zooms.max; ++z) {
     plans.push_back(plan_zoom(box, poleward, z, a.tile_size, {a.halo, a.max_distance}));
-    const auto b = blocks(plans.back(), a.tile_size);
+    const terrain::TileRange& c = plans.back().covering;
+    tile_count += static_cast<std::uint64_t>(c.columns()) * static_cast<std::uint64_t>(c.rows());
+  }
+  if (tile_count > a.max_tiles)
+    throw std::invalid_argument("zooms " + std::to_string(zooms.min) + "-" + std::to_string(zooms.max) + " cover the DEM with " +
+                                std::to_string(tile_count) + " tiles, over --max-tiles " + std::to_string(a.max_tiles) +
+                                " (its native zoom is " + std::to_string(source.native_zoom(a.tile_size)) +
+                                "); raise --max-tiles to render them");
+  for (const ZoomPlan& p : plans) {
+    const auto b = blocks(p, a.tile_size);
     all.insert(all.end(), b.begin(), b.end());
   }
   const std::vector<Block> mine = shard_blocks(all, shard);
@@ -291,6 +303,9 @@ void add_tiles_command(CLI::App& root, Action& run) {
                   "Largest DEM copy held in memory, MiB; a larger DEM is staged in a temporary GeoTIFF in $TMPDIR "
                   "(4 B a pixel, deleted once open) and read a block at a time")
       ->check(app::non_negative_number())->capture_default_str();
+  cmd->add_option("--max-tiles", a->max_tiles,
+                  "Most tiles the pyramid may cover (all shards together): a zoom range past it is refused")
+      ->capture_default_str();
   cmd->add_flag("-e,--resume", a->resume, "Complete an interrupted run: keep its finished tiles");
   cmd->add_flag("--overwrite", a->overwrite, "Replace OUT if it exists");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress or notes");

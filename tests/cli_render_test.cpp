@@ -220,6 +220,9 @@ TEST(Render, BadInputFailsInOneLine) {
   fails("--synthetic --time 2026-06-21T10:00Z --size 641x360 -o " + dir.file("v.mp4"), "even");
   fails("--synthetic --time 2026-06-21T10:00Z --speed 0" + out, "--speed");
   fails(dir.file("absent.tif") + " --time 2026-06-21T10:00Z" + out, "absent.tif");
+  fails("--synthetic --time 2026-06-21T10:00Z --fps 1e9 --duration 10" + out, "--fps must be in (0, 1000]");
+  // 1 + 2000 s × 1000 fps frames, counted in double (the int count overflowed before).
+  fails("--synthetic --time 2026-06-21T10:00Z --fps 1000 --duration 2000" + out, "2000001 frames");
 }
 
 }  // namespace

@@ -34,6 +34,8 @@ namespace sv = skylit::view;
 
 // The orbit camera circles its target once a minute of video.
 constexpr double kOrbitRateRadPerS = 2.0 * 3.14159265358979323846 / 60.0;
+// Most frames one render writes: ~9 hours of video at 30 fps, beyond any flight replay.
+constexpr int kMaxFrames = 1'000'000;
 
 struct RenderArgs {
   std::vector<std::string> inputs;
@@ -95,7 +97,13 @@ int run_render(const RenderArgs& a) {
   if (!(t1 >= t0)) throw std::invalid_argument("the frames' end is before their start (--from/--to/--duration)");
   if (a.light.request.sun_azimuth_deg || a.light.request.sun_elevation_deg)
     throw std::invalid_argument("render moves the sun with the clock: give --time, not --sun-azimuth/--sun-elevation");
-  const int frames = 1 + static_cast<int>(std::floor((t1 - t0) / a.speed * a.fps + 1e-9));
+  if (!(a.fps > 0.0) || a.fps > 1000.0) throw std::invalid_argument("--fps must be in (0, 1000] frames per second");
+  const double frame_count = 1.0 + std::floor((t1 - t0) / a.speed * a.fps + 1e-9);
+  if (frame_count > kMaxFrames)
+    throw std::invalid_argument(std::to_string(static_cast<long long>(frame_count)) + " frames (" +
+                                std::to_string(std::lround(t1 - t0)) + " s of track time at --speed and --fps) are over " +
+                                std::to_string(kMaxFrames) + ": raise --speed or lower --fps");
+  const int frames = static_cast<int>(frame_count);
 
   SinkOptions so;
   so.width = width;

@@ -309,7 +309,15 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   // t = (p − p₀)·step_m.
   const double window_steps = sweep_window_steps(field, g, o);
   const Wanted wanted = wanted_lines(field, g, o.region);
-  const double owner_reach = 0.5 * g.spacing() + 1e-6;  // spacing/2, with room for the rounding of b and c
+  // A texel is a line's only if its c is within spacing/2 of the line's (owner()), with
+  // room for the rounding of b and c. In texels of b that is as far on straight lines;
+  // where b is a row of a curved grid, Γ stretches rows by D_ref/D ≥ D_ref/D_max, so a
+  // texel within reach in Γ is within reach·D_max/D_ref rows, and a line may own two.
+  const double owner_reach = 0.5 * g.spacing() + 1e-6;
+  const bool stretched_rows = g.curved() && g.x_dominant;
+  const double reach =
+      stretched_rows ? owner_reach * *std::max_element(field.dx_per_row.begin(), field.dx_per_row.end()) / g.rows->d_ref()
+                     : owner_reach;
   // A line writes only the texels it owns, so lines run on any thread in any order.
   auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
     const double c = g.c_low + line * g.spacing();
@@ -345,21 +353,20 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
       if (n % 2 != 0 || n > wanted.n_high) continue;  // observers sit on whole texels of a
       const double a = g.a_at(n), b = bs[n], pn = ps[n];
       hulls.expire(pn);
-      // The texels beside b, the nearer first. On straight lines a texel is this line's
-      // only within spacing/2 of b (owner() rounds c = jb − r·a, and b = c_line + r·a),
-      // and one at most: most observers are settled without owner().
+      // The texels beside b, the nearer first: most observers are settled by `reach`
+      // without owner().
       const double nearest = std::floor(b + 0.5);
       const double other = b < nearest ? nearest - 1.0 : nearest + 1.0;
       for (const double jb : {nearest, other}) {
         if (jb == other && b == nearest) break;  // b whole: one texel beside it
-        if (!g.curved() && std::abs(jb - b) > owner_reach) break;
+        if (std::abs(jb - b) > reach) break;
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
         const int i = static_cast<int>(q.x), j = static_cast<int>(q.y);
         // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
         const double slope = hulls.max_slope(pn, field.at(i, j) - pn * drop * pn);
         far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
-        if (!g.curved()) break;
+        if (!stretched_rows) break;  // one texel at most
       }
     }
   };

@@ -40,6 +40,7 @@ double RhumbRows::gamma(double y) const {
   if (y <= 0.0) return y * d_ref_ / dx_[0];
   if (y >= h - 1.0) return last() + (y - (h - 1.0)) * d_ref_ / dx_[h - 1];
   const int j = std::min(static_cast<int>(y), h - 2);
+  if (y == j) return half_rows_[2 * j];  // a whole row (the sweep's owners): the formula's value at u = 0
   const double u = y - j, beta = dx_[j + 1] - dx_[j];
   return half_rows_[2 * j] + d_ref_ * (u / dx_[j]) * log1p_ratio(beta * u / dx_[j]);
 }

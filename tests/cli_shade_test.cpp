@@ -180,7 +180,8 @@ TEST(CliShade, BadInputFailsCleanly) {
   for (const auto& [arg, needle] : {std::pair{" --zfactor 0", "--zfactor: must be greater than 0, not 0"},
                                     std::pair{" --max-distance -5", "--max-distance: must be 0 or more, not -5"},
                                     std::pair{" --exposure nan", "--exposure: expected a finite number, not 'nan'"},
-                                    std::pair{" --xscale ten", "--xscale: expected a number, not 'ten'"}}) {
+                                    std::pair{" --xscale ten", "--xscale: expected a number, not 'ten'"},
+                                    std::pair{" --threads -1", "--threads: must be 0 or more, not -1"}}) {
     expect_clean_shade_failure(dir, hill + out + arg, needle);
     EXPECT_LT(run_skylit("shade " + hill + out + arg, true).out.size(), 120u) << arg;
   }

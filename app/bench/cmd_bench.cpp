@@ -112,7 +112,7 @@ void add_bench_command(CLI::App& root, Action& run) {
                   "Backend of the ground truth (the CPU reference is the oracle; gpu is faster)")
       ->capture_default_str();
   cmd->add_option("--threads", args->config.threads, "Worker threads of the reference backend (0: all cores)")
-      ->capture_default_str();
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_option("-o,--output", args->csv, "CSV of all settings (written atomically)");
   cmd->add_option("--front", args->front,
                   "CSV of the speed/error front over all scenes, per product, for skylit shade --max-error "

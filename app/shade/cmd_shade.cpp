@@ -587,7 +587,8 @@ void add_shade_command(CLI::App& root, Action& run) {
                   "(--max-distance, 5 km by default when blocked), so memory is bounded by the block: N | auto "
                   "(blocks where the DEM is over the GPU's limits or 4096^2 texels; docs/large-dems.md)")
       ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_flag("--compute-edges", args->compute_edges,
                 "-p hillshade: shade the border and nodata-adjacent pixels too (gdaldem -compute_edges); the horizon "
                 "products always compute edges");

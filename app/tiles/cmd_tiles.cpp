@@ -294,7 +294,8 @@ void add_tiles_command(CLI::App& root, Action& run) {
                        "Sun position for this ISO 8601 time with a zone, e.g. 2026-06-21T09:30:00Z (place: the "
                        "DEM's centre, or --lat/--lon); one time, not a series");
   cmd->add_option("--name", a->name, "Archive name in its metadata (default: the DEM's file name and the product)");
-  cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer and the tile encoder (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", a->threads, "Worker threads of the CPU renderer and the tile encoder (0: all cores)")
+      ->check(app::non_negative_number())->capture_default_str();
   cmd->add_option("-w,--webviewer", a->webviewer,
                   "leaflet: an index.html showing the tiles on a Leaflet map (beside a .pmtiles file, inside a "
                   "folder; Leaflet and pmtiles.js inlined) | none")

@@ -187,8 +187,7 @@ int run_tiles(const TilesArgs& a) {
   std::uint64_t tile_count = 0;
   for (int z = zooms.min; z <= zooms.max; ++z) {
     plans.push_back(plan_zoom(box, poleward, z, a.tile_size, {a.halo, a.max_distance}));
-    const terrain::TileRange& c = plans.back().covering;
-    tile_count += static_cast<std::uint64_t>(c.columns()) * static_cast<std::uint64_t>(c.rows());
+    tile_count += static_cast<std::uint64_t>(plans.back().covering.count());
   }
   if (tile_count > a.max_tiles)
     throw std::invalid_argument("zooms " + std::to_string(zooms.min) + "-" + std::to_string(zooms.max) + " cover the DEM with " +

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 
@@ -40,11 +42,20 @@ std::vector<std::uint8_t> product_tile_rgba(shading::Product product, const shad
   return rgba;
 }
 
-bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect) {
-  for (int y = rect.y0; y < rect.y1(); ++y)
-    for (int x = rect.x0; x < rect.x1(); ++x)
-      if (field.is_valid(x, y)) return true;
-  return false;
+terrain::PixelRect valid_bounds(const terrain::HeightField& field, const terrain::PixelRect& rect) {
+  int x0 = rect.x1(), x1 = rect.x0 - 1, y0 = rect.y1(), y1 = rect.y0 - 1;
+  for (int y = rect.y0; y < rect.y1(); ++y) {
+    const std::uint8_t* row = field.valid.data() + static_cast<std::size_t>(y) * field.width;
+    const std::uint8_t* first = std::find(row + rect.x0, row + rect.x1(), std::uint8_t{1});
+    if (first == row + rect.x1()) continue;
+    const std::uint8_t* last = std::find(std::make_reverse_iterator(row + rect.x1()), std::make_reverse_iterator(first),
+                                         std::uint8_t{1}).base() - 1;
+    x0 = std::min(x0, static_cast<int>(first - row));
+    x1 = std::max(x1, static_cast<int>(last - row));
+    y0 = std::min(y0, y);
+    y1 = y;
+  }
+  return x1 < x0 ? terrain::PixelRect{} : terrain::PixelRect{x0, y0, x1 - x0 + 1, y1 - y0 + 1};
 }
 
 std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba,

@@ -27,8 +27,9 @@ std::uint8_t product_code(shading::Product product, float value);
 std::vector<std::uint8_t> product_tile_rgba(shading::Product product, const shading::ProductBands& bands,
                                             const terrain::HeightField& field, const terrain::PixelRect& rect);
 
-// True when `rect` holds at least one valid pixel of `field` (tiles without one are not written).
-bool any_valid(const terrain::HeightField& field, const terrain::PixelRect& rect);
+// The bounding box of the valid pixels of `field` inside `rect`; empty when there are
+// none (tiles without one are not written).
+terrain::PixelRect valid_bounds(const terrain::HeightField& field, const terrain::PixelRect& rect);
 
 // The bytes of size × size RGBA pixels in `format` (deterministic: no time or software
 // stamp). PNG and WebP are lossless with alpha (WebP: libwebp's exact lossless mode, so a

@@ -1,8 +1,6 @@
 #include "app/tiles/tile_run.h"
 
 #include <algorithm>
-#include <cstdint>
-#include <iterator>
 #include <stdexcept>
 
 #include "app/tiles/tile_image.h"
@@ -36,31 +34,6 @@ std::vector<terrain::TileId> tiles_of(const terrain::TileRange& r) {
   return out;
 }
 
-// The pixels a block's tiles show: the bounding box of the valid pixels of the tiles
-// still to do (empty if none). Only their horizons are searched; the halo, the outside
-// of the DEM and the tiles done already are blockers at most.
-terrain::PixelRect shown_pixels(const terrain::TileWindow& window, const std::vector<terrain::TileId>& todo) {
-  terrain::PixelRect box;
-  const terrain::HeightField& f = window.field;
-  for (const terrain::TileId& t : todo) {
-    const terrain::PixelRect r = window.tile_rect(t);
-    int x0 = r.x1(), x1 = r.x0 - 1, y0 = r.y1(), y1 = r.y0 - 1;
-    for (int y = r.y0; y < r.y1(); ++y) {
-      const std::uint8_t* row = f.valid.data() + static_cast<std::size_t>(y) * f.width;
-      const auto first = std::find(row + r.x0, row + r.x1(), std::uint8_t{1});
-      if (first == row + r.x1()) continue;
-      const auto last = std::find(std::make_reverse_iterator(row + r.x1()), std::make_reverse_iterator(first),
-                                  std::uint8_t{1});
-      x0 = std::min(x0, static_cast<int>(first - row));
-      x1 = std::max(x1, static_cast<int>(last.base() - row) - 1);
-      y0 = std::min(y0, y);
-      y1 = y;
-    }
-    if (x1 >= x0) box = terrain::bounding_union(box, {x0, y0, x1 - x0 + 1, y1 - y0 + 1});
-  }
-  return box;
-}
-
 }  // namespace
 
 RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vector<ZoomPlan>& plans,
@@ -91,7 +64,14 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     // 60 % of a hillshade run's time on its wide outside halos.
     wo.fill = terrain::VoidFill::Nearest;
     const terrain::TileWindow window = source.window(b.tiles, wo);
-    const terrain::PixelRect shown = shown_pixels(window, todo);
+    // The pixels the tiles to do show: only their horizons are searched; the halo, the
+    // outside of the DEM and the tiles done already are blockers at most.
+    std::vector<terrain::PixelRect> valid(todo.size());
+    terrain::PixelRect shown;
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+      valid[k] = valid_bounds(window.field, window.tile_rect(todo[k]));
+      shown = terrain::bounding_union(shown, valid[k]);
+    }
     if (shown.empty()) {  // the tiles to do miss the DEM's valid pixels
       n.empty += static_cast<long long>(todo.size());
       progress.update(done());
@@ -110,8 +90,8 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
     // the archive gets them in the block's order, as a serial run would.
     std::vector<std::optional<std::string>> encoded(todo.size());
     parallel::parallel_rows(static_cast<int>(todo.size()), job.threads, [&](int k) {
+      if (valid[k].empty()) return;
       const terrain::PixelRect rect = window.tile_rect(todo[k]);
-      if (!any_valid(window.field, rect)) return;
       std::vector<std::uint8_t> rgba(static_cast<std::size_t>(job.tile_size) * job.tile_size * 4);
       if (bands) rgba = product_tile_rgba(*job.product, *bands, window.field, rect);
       else terrain::encode_dem_tile(*job.encoding, window.field, rect, rgba);

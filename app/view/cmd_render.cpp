@@ -97,7 +97,10 @@ int run_render(const RenderArgs& a) {
   if (!(t1 >= t0)) throw std::invalid_argument("the frames' end is before their start (--from/--to/--duration)");
   if (a.light.request.sun_azimuth_deg || a.light.request.sun_elevation_deg)
     throw std::invalid_argument("render moves the sun with the clock: give --time, not --sun-azimuth/--sun-elevation");
-  if (!(a.fps > 0.0) || a.fps > 1000.0) throw std::invalid_argument("--fps must be in (0, 1000] frames per second");
+  // Before the frames are counted (the sink checks it too, after).
+  if (!(a.fps > 0.0) || a.fps > kMaxFrameRate)
+    throw std::invalid_argument("--fps must be in (0, " + std::to_string(static_cast<int>(kMaxFrameRate)) +
+                                "] frames per second");
   const double frame_count = 1.0 + std::floor((t1 - t0) / a.speed * a.fps + 1e-9);
   if (frame_count > kMaxFrames)
     throw std::invalid_argument(std::to_string(static_cast<long long>(frame_count)) + " frames (" +

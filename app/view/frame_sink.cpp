@@ -313,8 +313,9 @@ class FfmpegVideo final : public FrameSink {
 std::unique_ptr<FrameSink> open_frame_sink(const std::string& path, const SinkOptions& options) {
   if (options.width < 1 || options.height < 1 || options.frames < 0)
     throw std::logic_error("frame sink: no frame size");
-  if (!(options.fps > 0.0) || options.fps > 1000.0)
-    throw std::invalid_argument("the frame rate must be in (0, 1000] frames per second");
+  if (!(options.fps > 0.0) || options.fps > kMaxFrameRate)
+    throw std::invalid_argument("the frame rate must be in (0, " + std::to_string(static_cast<int>(kMaxFrameRate)) +
+                                "] frames per second");
   const std::string ext = lower(fs::path(path).extension().string());
   if (ext == ".png") {
     if (!frame_pattern(path))

@@ -14,6 +14,9 @@
 
 namespace skylit::app::view {
 
+// Frame rates a sink takes: (0, kMaxFrameRate] frames per video second.
+inline constexpr double kMaxFrameRate = 1000.0;
+
 struct SinkOptions {
   int width = 0, height = 0;  // every frame's size (videos: even sides)
   double fps = 30.0;          // frames per video second

@@ -104,10 +104,16 @@ GpuProductPipeline& GpuRenderer::pipeline_for(Product product, const shading::Pr
   return *cache_.back().pipeline;
 }
 
+bool GpuRenderer::blocked_pipeline(Product product, const shading::ProductOptions& options,
+                                   const shading::FrameInputs& inputs) const {
+  if (shading::blocked_frame(product, inputs)) return true;
+  return blockers_expected_ && shading::traits(product).blocked && !lacks_blockers(product, options);
+}
+
 GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::ProductOptions& options,
                                          const shading::FrameInputs& inputs) {
   context_->make_current();
-  const bool blocked = shading::blocked_frame(product, inputs);
+  const bool blocked = blocked_pipeline(product, options, inputs);
   GpuProductPipeline& pipeline = pipeline_for(product, options, blocked);  // its construction compiles
   last_ = &pipeline;
   if (blocked) pipeline.set_spheres(inputs.spheres);

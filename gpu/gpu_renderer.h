@@ -46,6 +46,7 @@ class GpuRenderer final : public shading::Renderer {
   void set_field(const terrain::HeightField& field) override { field_ = &field; }
   void set_options(const shading::ProductOptions& options) override;
   void expect_frames(int frames) override { keep_ = frames > 1; }
+  void expect_blockers(bool expected) override { blockers_expected_ = expected; }
   void drop_horizons() override;
   void set_refresh_budget(std::size_t texels_per_frame) override { refresh_budget_ = texels_per_frame; }
   // GpuProductPipeline::set_sun_heading_tolerance for every frame's pipeline (the viewer's
@@ -81,6 +82,10 @@ class GpuRenderer final : public shading::Renderer {
   // Each pipeline holds its own copy of the field on the GPU: a few settings at most.
   static constexpr std::size_t kCachedPipelines = 4;
   GpuProductPipeline& pipeline_for(shading::Product product, const shading::ProductOptions& options, bool blocked);
+  // Whether the frame takes a pipeline built with blockers: it has spheres that darken
+  // the product, or blockers are expected and the product can take them.
+  bool blocked_pipeline(shading::Product product, const shading::ProductOptions& options,
+                        const shading::FrameInputs& inputs) const;
   // A frame's checks and options; resets the timings.
   shading::ProductOptions begin_frame(shading::Product product, const shading::FrameInputs& inputs);
   GpuProductPipeline& prepare(shading::Product product, const shading::ProductOptions& options,
@@ -93,6 +98,7 @@ class GpuRenderer final : public shading::Renderer {
   const terrain::HeightField* field_ = nullptr;
   shading::ProductOptions options_;
   bool keep_ = false;
+  bool blockers_expected_ = false;
   std::size_t refresh_budget_ = 0;
   double sun_heading_tolerance_ = 0.0;
   bool keep_sky_ = false;

@@ -37,6 +37,10 @@ class AutoRenderer final : public shading::Renderer {
     if (gpu_) gpu_->expect_frames(frames);
     if (reference_) reference_->expect_frames(frames);
   }
+  void expect_blockers(bool expected) override {
+    blockers_expected_ = expected;
+    if (gpu_) gpu_->expect_blockers(expected);
+  }
   void set_refresh_budget(std::size_t texels_per_frame) override {
     refresh_budget_ = texels_per_frame;
     if (gpu_) gpu_->set_refresh_budget(texels_per_frame);
@@ -109,6 +113,7 @@ class AutoRenderer final : public shading::Renderer {
     if (field_) gpu_->set_field(*field_);
     gpu_->set_options(options_);
     gpu_->expect_frames(frames_);
+    gpu_->expect_blockers(blockers_expected_);
     gpu_->set_refresh_budget(refresh_budget_);
     gpu_->set_sun_heading_tolerance(sun_heading_tolerance_);
   }
@@ -129,6 +134,7 @@ class AutoRenderer final : public shading::Renderer {
   const terrain::HeightField* field_ = nullptr;
   shading::ProductOptions options_;
   int frames_ = 1;
+  bool blockers_expected_ = false;
   std::size_t refresh_budget_ = 0;
   double sun_heading_tolerance_ = 0.0;
   bool last_on_gpu_ = false;

@@ -96,6 +96,12 @@ class Renderer {
   // more than one, the first frame keeps what later frames reuse (GPU: the visibility,
   // 4·n² bytes per texel). Without it the second frame starts keeping.
   virtual void expect_frames(int frames) = 0;
+  // Whether the frames may carry blockers (a replay's aircraft): a frame without any (a
+  // track's gap, before take-off) then takes the same kernels as the frames with them,
+  // so what they keep (the GPU's visibility and horizons) survives it, rather than a
+  // frame of other kernels computing the horizons again. This default, the reference's,
+  // keeps nothing of blocked frames whatever the hint.
+  virtual void expect_blockers(bool /*expected*/) {}
   // Forgets the kept horizons and visibility (the kernels stay compiled): the next
   // frame does all its work, as a benchmark of one whole frame needs.
   virtual void drop_horizons() = 0;

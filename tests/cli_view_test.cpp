@@ -230,6 +230,38 @@ TEST(ViewWindow, TrackOutsideTheDemIsANoteAndTheViewerRuns) {
   EXPECT_EQ(read_output(dir.file("f.png")).w, 160);
 }
 
+// The sample track has 20 s of invalid fixes: there the aircraft is not drawn, the
+// follow camera holds where it last saw it (not off to the field's centre), and the
+// frames keep the horizons (the renderer's blocked kernels, with no spheres).
+TEST(ViewWindow, ThroughATracksGapTheCameraHoldsAndTheHorizonsStay) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  // 16 frames 2 s of track time apart from 10:05:35Z, across the gap.
+  const skylit::testing::Run r = run_view("--synthetic --scene-size 256 --track " + kTrack +
+                                          " --time 2026-06-21T10:05:35Z --speed 8 --fps 4 --frames 16 --width 160 "
+                                          "--height 120 --screenshot " + dir.file("g.png") + " --camera-log " +
+                                          dir.file("c.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const terrain::HeightField scene = app::make_georeferenced_scene(256, 1);
+  const app::shade::TrackedAircraft air(kTrack, "glider", app::parse_altitude_arg("gnss"), scene);
+  const std::vector<CameraRow> log = read_camera_log(dir.file("c.csv"));
+  ASSERT_EQ(log.size(), 16u);
+  int in_gap = 0, flown = 0;
+  for (std::size_t k = 1; k < log.size(); ++k) {
+    EXPECT_EQ(log[k].horizons_computed, 0) << "frame " << k;
+    const double step = glm::distance(log[k].eye, log[k - 1].eye);
+    if (!air.pose_at(0, log[k].time) && !air.pose_at(0, log[k - 1].time)) {
+      ++in_gap;
+      EXPECT_LT(step, 1.0) << "frame " << k << " in the gap";
+    } else if (air.pose_at(0, log[k].time) && air.pose_at(0, log[k - 1].time)) {
+      ++flown;
+      EXPECT_GT(step, 20.0) << "frame " << k << " follows the aircraft";
+    }
+  }
+  EXPECT_GE(in_gap, 5);
+  EXPECT_GE(flown, 3);
+}
+
 struct BrushRun {
   OutputRaster before, after;  // frames 2 and 9
   std::vector<CameraRow> log;

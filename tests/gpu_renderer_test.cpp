@@ -115,6 +115,35 @@ TEST_F(GpuRendererTest, BlockedSeriesFramesEqualFreshPipelinesAndReuseTheHorizon
   }
 }
 
+// A replay's track has gaps: told to expect blockers, the renderer shades a frame
+// without spheres with the blocked kernels, keeping the horizons on both sides of it,
+// and the frame equals the terrain's alone (a fresh pipeline without blockers) bit for bit.
+TEST_F(GpuRendererTest, AFrameWithoutTheExpectedSpheresKeepsTheHorizons) {
+  const terrain::HeightField f = testing::synthetic_field();
+  const ProductOptions o = small_options();
+  const Lighting sun = sun_at(135, 30, "preetham");
+  const double dx = f.mean_dx(), dy = f.dy;
+  const std::vector<blockers::Sphere> spheres = {{{40.0 * dx, -30.0 * dy, f.at(40, 30) + 80.0}, 40.0}};
+  for (Product p : {Product::Shaded, Product::Irradiance, Product::Shadow}) {
+    for (const bool expected : {false, true}) {
+      const auto renderer = renderer_on(f, o, 3);
+      GpuRenderer& r = *renderer;
+      r.expect_blockers(expected);
+      r.frame(p, {sun, spheres, std::nullopt});
+      const ProductBands gap = r.frame(p, {sun, {}, std::nullopt});
+      const bool gap_kept = r.last_timings().horizons_reused;
+      r.frame(p, {sun, spheres, std::nullopt});
+      const bool after_kept = r.last_timings().horizons_reused;
+      const std::string what = std::string(shading::product_name(p)) + (expected ? ", expected" : ", unexpected");
+      if (p != Product::Shadow) {  // shadow keeps no horizons
+        EXPECT_EQ(gap_kept, expected) << what;
+        EXPECT_TRUE(after_kept) << what;
+      }
+      EXPECT_TRUE(bit_identical(gap, fresh(r, f, p, o, sun))) << what;
+    }
+  }
+}
+
 TEST_F(GpuRendererTest, AFrameAfterAnEditRecomputesTheVisibility) {
   terrain::HeightField f = testing::synthetic_field();
   const ProductOptions o = small_options();

@@ -41,7 +41,7 @@ shading::ProductOptions options(shading::ToneCurve tone) {
 std::vector<std::uint8_t> top_down(gpu::GpuRenderer& renderer, const terrain::HeightField& f,
                                    const shading::ProductOptions& o, const shading::FrameInputs& inputs,
                                    const glm::dvec3& clear = glm::dvec3(0.0)) {
-  SceneView view(renderer, f, o);
+  SceneView view(renderer, f, o, !inputs.spheres.empty());
   OffscreenTarget target(f.width, f.height);
   target.bind();
   ViewFrame frame;
@@ -201,7 +201,7 @@ WithoutAndWith looking_north(const terrain::HeightField& f, const glm::dvec3& ey
   with.spheres = {sphere};
   gpu::GpuRenderer renderer;
   const shading::ProductOptions o = options(shading::ToneCurve::Linear);
-  SceneView view(renderer, f, o);
+  SceneView view(renderer, f, o, true);  // the frame without the sphere takes the same kernels
   OffscreenTarget target(size, size);
   auto draw = [&](const shading::FrameInputs& inputs) {
     target.bind();

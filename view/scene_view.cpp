@@ -82,11 +82,12 @@ ViewCamera ortho_nadir_camera(const terrain::HeightField& field, double exaggera
 }
 
 SceneView::SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& field,
-                     const shading::ProductOptions& options)
+                     const shading::ProductOptions& options, bool aircraft)
     : renderer_(renderer), field_(field), terrain_(field) {
   renderer_.set_field(field);
   renderer_.set_options(options);
   renderer_.expect_frames(2);  // many frames: keep the visibility between them
+  renderer_.expect_blockers(aircraft);
   renderer_.set_sun_heading_tolerance(kSunTolerance);
   renderer_.keep_sky_irradiance(true);
 }

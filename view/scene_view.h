@@ -88,7 +88,10 @@ class SceneView {
  public:
   // The renderer's field must stay alive and resident (renderer.set_field) while the view
   // draws; `options` are the renderer's (the `shaded` product's horizon and quality).
-  SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& field, const shading::ProductOptions& options);
+  // `aircraft`: frames may carry spheres (Renderer::expect_blockers), so a frame without
+  // any (a track's gap) keeps the horizons.
+  SceneView(gpu::GpuRenderer& renderer, const terrain::HeightField& field, const shading::ProductOptions& options,
+            bool aircraft);
 
   // Draws into the framebuffer bound now (viewport width × height).
   ViewTimings draw(const ViewFrame& frame, int width, int height, bool measure = false);

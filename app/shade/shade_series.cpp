@@ -46,6 +46,7 @@ void print_frame_times(const std::vector<double>& ms, int sun_far_kept) {
 void run_series(shading::Renderer& renderer, const terrain::HeightField& field, const SeriesJob& job) {
   const int n = static_cast<int>(job.instants.size());
   renderer.expect_frames(n);
+  renderer.expect_blockers(static_cast<bool>(job.spheres_at));
   std::optional<shading::SeriesSum> sum;
   if (job.summed) sum.emplace(*job.summed, job.instants, field.width, field.height);
   const std::string label = job.summed ? std::string(shading::summed_product_name(*job.summed))

@@ -8,6 +8,7 @@
 #include "app/common/progress.h"
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
+#include "app/view/camera_aim.h"
 #include "app/view/frame_sink.h"
 #include "gpu/gpu_renderer.h"
 #include "shading/sky/time_utc.h"
@@ -121,10 +122,11 @@ int run_render(const RenderArgs& a) {
   gpu::GpuRenderer renderer;
   shading::ProductOptions options;
   options.shaded.tone = tone_curve(a.light);
-  sv::SceneView scene(renderer, field, options);
+  sv::SceneView scene(renderer, field, options, aircraft.has_value());
   sv::LightingReuse lighting_reuse(sv::kSunTolerance, sv::kSkyTolerance);
   sv::OffscreenTarget target(width, height);
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
+  CameraAim aim(field);
   if (mode) rig.set_mode(*mode);
   if (!a.quiet)
     std::cerr << "skylit: " << frames << " frames " << width << "x" << height << " from "
@@ -148,11 +150,7 @@ int run_render(const RenderArgs& a) {
       frame.camera = sv::ortho_nadir_camera(field, a.exaggeration);
       frame.draw_bodies = false;
     } else {
-      sv::CameraTarget aim = sv::field_centre_target(field, a.exaggeration);
-      if (aircraft)
-        if (const auto pose = aircraft->pose_at(0, t))
-          aim = {pose->position * glm::dvec3(1.0, 1.0, a.exaggeration), pose->attitude.heading_deg};
-      rig.set_target(aim);
+      rig.set_target(aim.at(aircraft, 0, t, a.exaggeration));
       sv::CameraInput turn;
       if (mode == sv::CameraMode::Orbit) turn.yaw_rad = kOrbitRateRadPerS / a.fps;  // per video second
       if (k == 0) rig.settle();

@@ -20,6 +20,7 @@
 #include "app/common/altitude_arg.h"
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
+#include "app/view/camera_aim.h"
 #include "app/view/window/glfw_window.h"
 #include "app/view/window/key_bindings.h"
 #include "app/view/window/screenshot.h"
@@ -130,6 +131,7 @@ class Viewer {
   std::unique_ptr<sv::SceneView> scene_;
   double exaggeration_;
   sv::CameraRig rig_;
+  CameraAim aim_{field_};
   std::optional<sv::Timeline> timeline_;
   InputState input_;
   PanelState panel_;
@@ -185,7 +187,7 @@ Viewer::Viewer(const ViewerOptions& o)
   while (speed + 1 < static_cast<int>(sv::kPlaybackSpeeds.size()) && sv::kPlaybackSpeeds[speed] < o.speed) ++speed;
   timeline_->set_speed_index(speed);
 
-  scene_ = std::make_unique<sv::SceneView>(renderer_, field_, options_);
+  scene_ = std::make_unique<sv::SceneView>(renderer_, field_, options_, aircraft_.has_value());
   rig_.set_mode(*mode);
   panel_.camera = static_cast<int>(*mode);
   panel_.quality = quality_ = static_cast<int>(*q);
@@ -284,7 +286,7 @@ void Viewer::apply_panel() {
     quality_ = panel_.quality;
     shading::apply_quality(static_cast<shading::Quality>(quality_), options_);
     scene_.reset();
-    scene_ = std::make_unique<sv::SceneView>(renderer_, field_, options_);
+    scene_ = std::make_unique<sv::SceneView>(renderer_, field_, options_, aircraft_.has_value());
   }
   if (panel_.screenshot) screenshot_now_ = true;
 }
@@ -371,11 +373,7 @@ sv::ViewFrame Viewer::make_frame() {
   if (aircraft_) frame.shading.spheres = aircraft_->spheres_at(t);
   frame.style.tone = options_.shaded.tone;
   frame.style.exaggeration = exaggeration_;
-  sv::CameraTarget aim = sv::field_centre_target(field_, exaggeration_);
-  if (aircraft_)
-    if (const auto pose = aircraft_->pose_at(followed_, t))
-      aim = {pose->position * glm::dvec3(1.0, 1.0, exaggeration_), pose->attitude.heading_deg};
-  rig_.set_target(aim);
+  rig_.set_target(aim_.at(aircraft_, followed_, t, exaggeration_));
   return frame;
 }
 

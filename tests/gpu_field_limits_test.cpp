@@ -41,7 +41,9 @@ TEST_F(FieldLimits, TheLargestSquareIsTheLastThatFits) {
     EXPECT_FALSE(skylit::gpu::field_fits_gpu(*side + 1, *side + 1, Product::Svf, bounded(k_v)));
     // The heights' block, as the pipeline checks it, holds the side.
     EXPECT_NO_THROW(skylit::gpu::check_storage_size(std::size_t(*side) * *side * sizeof(float), "heights"));
-    if (on_llvmpipe()) EXPECT_EQ(*side, k_v == 4 ? 5792 : 4621) << "k_v " << k_v;
+    if (on_llvmpipe()) {
+      EXPECT_EQ(*side, k_v == 4 ? 5792 : 4621) << "k_v " << k_v;
+    }
   }
   // Host-side products have no GPU limit.
   EXPECT_FALSE(skylit::shading::max_square_side(renderer, Product::Hillshade, bounded(4)));

@@ -169,12 +169,17 @@ double scene_ground(const terrain::HeightField& f, double x, double y) {
 TEST(ViewWindow, FreeCameraFlownIntoTheGroundStaysAboveIt) {
   SKYLIT_REQUIRE(missing_xvfb());
   ScratchDir dir;
-  // Orbit's start, then free: look down, full speed forward and sideways for 4 s.
-  write_text(dir.file("s.txt"), "0 press 3\n1 look 0 400\n2 hold w 120\n2 hold d 120\n2 hold shift 120\n122 quit\n");
+  // The free camera 400 m over the field's centre, then: look down, full speed forward
+  // and sideways for 4 s.
+  const terrain::HeightField scene = app::make_georeferenced_scene(256, 1);
+  const double cx = 128 * scene.mean_dx(), cy = -128 * scene.dy;
+  std::ostringstream script;
+  script << "0 pose " << cx << " " << cy << " " << scene_ground(scene, cx, cy) + 400.0
+         << " 0 -30\n1 look 0 400\n2 hold w 120\n2 hold d 120\n2 hold shift 120\n122 quit\n";
+  write_text(dir.file("s.txt"), script.str());
   const skylit::testing::Run r = run_view("--synthetic --scene-size 256 --camera orbit --time 2026-06-21T10:00:00Z --width 160 "
                          "--height 120 --script " + dir.file("s.txt") + " --camera-log " + dir.file("c.csv"));
   ASSERT_EQ(r.status, 0) << r.out;
-  const terrain::HeightField scene = app::make_georeferenced_scene(256, 1);
   const std::vector<CameraRow> log = read_camera_log(dir.file("c.csv"));
   ASSERT_EQ(log.size(), 123u);
   double lowest = 1e9;

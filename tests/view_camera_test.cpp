@@ -3,13 +3,17 @@
 // thin for the sampling to see from its ends), follow and orbit placement, the
 // orthographic corners, and clear rejection of bad input.
 #include "view/camera.h"
+#include "view/scene_view.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 
 namespace {
@@ -140,6 +144,46 @@ TEST(CameraRig, OrbitPitchAndDistanceStayInTheirRanges) {
   EXPECT_NEAR(rig.orbit_distance(), 20.0, 1e-9);
   const glm::dvec3 rel = rig.pose().eye - glm::dvec3(0.0, 0.0, 1000.0);
   EXPECT_NEAR(std::asin(rel.z / glm::length(rel)) * 180.0 / M_PI, 89.0, 0.01);
+}
+
+// With no aircraft the cameras aim at the field's centre: the overview's distances show
+// the whole field (its corners, at their heights, inside the 16:9 frame) whichever way
+// the orbit turns, and not as a speck (the corners span 40 % of the frame's width or
+// height).
+TEST(CameraRig, OverviewFramesTheWholeFieldFromEveryHeading) {
+  for (const auto& [w, h] : {std::pair{327, 468}, std::pair{1024, 256}}) {
+    skylit::terrain::HeightField f(w, h, 30.0);
+    for (int j = 0; j < h; ++j)  // a cone 2 km high in the middle
+      for (int i = 0; i < w; ++i)
+        f.at(i, j) = static_cast<float>(std::max(0.0, 2000.0 - 30.0 * std::hypot(i - 0.5 * w, j - 0.5 * h)));
+    const auto ground = skylit::view::ground_of(f, 1.0);
+    const CameraTarget centre = skylit::view::field_centre_target(f, 1.0);
+    for (CameraMode mode : {CameraMode::Orbit, CameraMode::Follow}) {
+      CameraRig rig(ground, skylit::view::overview_rig_options(f, 1280.0 / 720.0, 1.0));
+      rig.set_mode(mode);
+      rig.set_target(centre);
+      rig.settle();
+      for (int step = 0; step < (mode == CameraMode::Orbit ? 24 : 1); ++step) {
+        CameraInput turn;
+        turn.yaw_rad = step == 0 ? 0.0 : 15.0 * M_PI / 180.0;
+        rig.update(1e-3, turn);
+        rig.settle();
+        const skylit::view::ViewCamera c = skylit::view::perspective_camera(rig.pose(), f, 1280, 720, 1.0);
+        glm::dvec2 lo(1.0), hi(-1.0);
+        for (const auto& [i, j] : {std::pair{0, 0}, std::pair{w - 1, 0}, std::pair{0, h - 1}, std::pair{w - 1, h - 1}}) {
+          const glm::dvec4 clip = c.proj * c.view * glm::dvec4(i * 30.0, -j * 30.0, f.at(i, j), 1.0);
+          const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+          EXPECT_GT(clip.w, 0.0);
+          EXPECT_LE(std::abs(ndc.x), 1.0) << w << "x" << h << " step " << step << " corner " << i << "," << j;
+          EXPECT_LE(std::abs(ndc.y), 1.0) << w << "x" << h << " step " << step << " corner " << i << "," << j;
+          lo = glm::min(lo, glm::dvec2(ndc));
+          hi = glm::max(hi, glm::dvec2(ndc));
+        }
+        const glm::dvec2 span = 0.5 * (hi - lo);  // of the frame's width and height
+        EXPECT_GT(std::max(span.x, span.y), 0.4) << w << "x" << h << " step " << step;
+      }
+    }
+  }
 }
 
 TEST(Camera, OrthoNadirMapsTheExtentToTheClipSquare) {

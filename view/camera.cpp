@@ -56,7 +56,10 @@ CameraRig::CameraRig(GroundHeight ground, RigOptions options) : ground_(std::mov
     throw std::invalid_argument("camera rig: free_speed_mps must be finite and > 0");
   if (!(o.smoothing_s >= 0.0 && std::isfinite(o.smoothing_s)))
     throw std::invalid_argument("camera rig: smoothing_s must be finite and >= 0");
+  if (!(std::abs(o.orbit_pitch_rad) < 1.5))
+    throw std::invalid_argument("camera rig: orbit_pitch_rad must be within ±1.5");
   orbit_distance_ = std::clamp(o.orbit_distance_m, kMinDistance, kMaxDistance);
+  orbit_pitch_ = std::clamp(o.orbit_pitch_rad, -5.0 * kDeg, 89.0 * kDeg);
   pose_.eye.z = std::max(pose_.eye.z, required_z(pose_.eye.x, pose_.eye.y));
 }
 

@@ -51,6 +51,7 @@ struct RigOptions {
   double follow_distance_m = 120.0;
   double follow_height_m = 35.0;
   double orbit_distance_m = 400.0;
+  double orbit_pitch_rad = 0.5;  // the orbit eye's first elevation over the target
   double free_speed_mps = 80.0;
   double smoothing_s = 0.35;  // time constant of the exponential smoothing; 0: none
 };
@@ -115,7 +116,7 @@ class CameraRig {
   glm::dvec3 focus_rel_{0.0};        // look-at point − target
   double follow_scale_ = 1.0;        // follow distance and height scale (zoom)
   double orbit_yaw_ = 0.0;           // the view's heading (rad clockwise from north)
-  double orbit_pitch_ = 0.5;         // the eye's elevation over the target (rad)
+  double orbit_pitch_ = 0.5;         // the eye's elevation over the target (rad; RigOptions' first)
   double orbit_distance_ = 400.0;
   double speed_steps_ = 0.0;         // free speed zoom steps
 };

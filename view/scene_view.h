@@ -28,11 +28,14 @@ struct ViewCamera {
   double pixels_per_radian = 0.0;  // 0: orthographic
 };
 
+// The cameras' vertical field of view (degrees).
+inline constexpr double kFovyDeg = 50.0;
+
 // A perspective camera at `pose` for a viewport of width × height; its near plane stays
 // in front of the ground and of `bodies` (the frame's aircraft, drawn z × exaggeration).
 ViewCamera perspective_camera(const CameraPose& pose, const terrain::HeightField& field, int width, int height,
                               double exaggeration, std::span<const blockers::Sphere> bodies = {},
-                              double fovy_deg = 50.0);
+                              double fovy_deg = kFovyDeg);
 // Straight down over the field's extent (texel centres ± half a texel): pixel (c, r) of
 // a field-sized viewport is texel (c, r).
 ViewCamera ortho_nadir_camera(const terrain::HeightField& field, double exaggeration);
@@ -44,6 +47,14 @@ GroundHeight ground_of(const terrain::HeightField& field, double exaggeration);
 // The field's centre on its (exaggerated) ground, heading north: what the cameras aim
 // at with no aircraft to follow.
 CameraTarget field_centre_target(const terrain::HeightField& field, double exaggeration);
+
+// The rig's distances when it aims at the field's centre (no aircraft to follow): the
+// follow and orbit eyes the least distance, 30° over the centre, from which the field's
+// rim (its edges at their heights, × exaggeration) and its highest texel fill at most
+// 95 % of a kFovyDeg view of this aspect (width / height) from every heading the orbit
+// may take. Free flight crosses the field in a minute (at least the
+// aircraft's 80 m/s).
+RigOptions overview_rig_options(const terrain::HeightField& field, double aspect, double exaggeration);
 
 // How far the sun may move before the frame's sun slopes (GpuRenderer::
 // set_sun_heading_tolerance) and lighting (LightingReuse, view/lighting_reuse.h) are

@@ -125,7 +125,8 @@ int run_render(const RenderArgs& a) {
   sv::SceneView scene(renderer, field, options, aircraft.has_value());
   sv::LightingReuse lighting_reuse(sv::kSunTolerance, sv::kSkyTolerance);
   sv::OffscreenTarget target(width, height);
-  sv::CameraRig rig(sv::ground_of(field, a.exaggeration));
+  sv::CameraRig rig(sv::ground_of(field, a.exaggeration), aircraft ? sv::RigOptions{}
+                             : sv::overview_rig_options(field, static_cast<double>(width) / height, a.exaggeration));
   CameraAim aim(field);
   if (mode) rig.set_mode(*mode);
   if (!a.quiet)

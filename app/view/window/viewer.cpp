@@ -107,6 +107,10 @@ class Viewer {
 
  private:
   void load_aircraft();
+  // The ground under the cameras, at the exaggeration of the moment.
+  sv::GroundHeight ground() {
+    return [this](double x, double y) { return sv::ground_of(field_, exaggeration_)(x, y); };
+  }
   void fit_to_gpu();
   void apply_actions();
   void apply_panel();
@@ -158,7 +162,7 @@ Viewer::Viewer(const ViewerOptions& o)
       window_(o.width, o.height, "skylit", o.script.empty() && o.frames == 0),
       renderer_(std::make_unique<gpu::HeadlessContext>(gpu::AdoptCurrentContext{"GLFW window"})),
       exaggeration_(o.exaggeration),
-      rig_([this](double x, double y) { return sv::ground_of(field_, exaggeration_)(x, y); }) {
+      rig_(ground()) {
   const std::optional<shading::Quality> q = shading::parse_quality(o.quality);
   const std::optional<sv::CameraMode> mode = sv::parse_camera_mode(o.camera);
   frame_s_ = (!o.script.empty() || o.frames > 0) ? 1.0 / o.fps : 0.0;
@@ -169,6 +173,8 @@ Viewer::Viewer(const ViewerOptions& o)
   fit_to_gpu();
   if (o.refresh_frames > 0) renderer_.set_refresh_budget((field_.size() + o.refresh_frames - 1) / o.refresh_frames);
   load_aircraft();
+  if (!aircraft_)
+    rig_ = sv::CameraRig(ground(), sv::overview_rig_options(field_, static_cast<double>(o.width) / o.height, exaggeration_));
   double t0 = 0.0;
   if (!o.light.request.time.empty()) t0 = sky::parse_utc_time(o.light.request.time).unix_seconds;
   if (aircraft_) {

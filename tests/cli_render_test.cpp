@@ -4,6 +4,7 @@
 // bad input fails in one line and leaves nothing behind.
 #include "app/view/frame_sink.h"
 #include "cli_test_util.h"
+#include "shading/sky/time_utc.h"
 
 #include <gtest/gtest.h>
 
@@ -204,6 +205,31 @@ TEST(Render, FollowFramesAndTheirVideoAgree) {
   }
 }
 
+// A date alone is that local day's daylight: the frames run from sunrise to sunset, as
+// `skylit sun` gives them for the place, in 30 s of video unless --speed says otherwise.
+TEST(Render, ADateAloneRendersItsDaylight) {
+  ScratchDir dir;
+  const std::string place = " --lat 47 --lon 7.9";
+  const auto r = run_skylit("render --synthetic --scene-size 64 --size 64x36 --camera orbit --time 2026-06-21 --fps 0.1" +
+                                place + " -o " + dir.file("d_%d.png"),
+                            true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(dir.listing(), (std::vector<std::string>{"d_0.png", "d_1.png", "d_2.png", "d_3.png"})) << r.out;
+  const auto from = r.out.find(" from "), to = r.out.find(" to ", from);
+  ASSERT_NE(to, std::string::npos) << r.out;
+  const double start = skylit::sky::parse_utc_time(r.out.substr(from + 6, to - from - 6)).unix_seconds;
+  const double end = skylit::sky::parse_utc_time(r.out.substr(to + 4, r.out.find(' ', to + 4) - to - 4)).unix_seconds;
+  int status = 0;
+  const std::string sun = shell(std::string(SKYLIT_BINARY) + " sun" + place + " --time 2026-06-21T12:00:00Z --json", &status);
+  ASSERT_EQ(status, 0) << sun;
+  const auto field = [&](const std::string& key) {
+    const auto at = sun.find("\"" + key + "\": \"") + key.size() + 5;
+    return skylit::sky::parse_utc_time(sun.substr(at, sun.find('"', at) - at)).unix_seconds;
+  };
+  EXPECT_NEAR(start, field("sunrise"), 1.0) << sun << r.out;
+  EXPECT_NEAR(end, field("sunset"), 1.0) << sun << r.out;
+}
+
 TEST(Render, BadInputFailsInOneLine) {
   ScratchDir dir;
   auto fails = [&](const std::string& args, const std::string& needle) {
@@ -217,6 +243,7 @@ TEST(Render, BadInputFailsInOneLine) {
   fails("--synthetic --time 2026-06-21T10:00Z --camera sideways" + out, "--camera 'sideways'");
   fails("--synthetic --time 2026-06-21T10:00Z --size 640" + out, "WIDTHxHEIGHT");
   fails("--synthetic" + out, "--time");
+  fails("--synthetic --time 2026-12-21 --lat 85 --lon 0" + out, "polar night");
   fails("--synthetic --time 2026-06-21T10:00Z --size 641x360 -o " + dir.file("v.mp4"), "even");
   fails("--synthetic --time 2026-06-21T10:00Z --speed 0" + out, "--speed");
   fails(dir.file("absent.tif") + " --time 2026-06-21T10:00Z" + out, "absent.tif");

@@ -37,6 +37,9 @@ namespace sv = skylit::view;
 constexpr double kOrbitRateRadPerS = 2.0 * 3.14159265358979323846 / 60.0;
 // Most frames one render writes: ~9 hours of video at 30 fps, beyond any flight replay.
 constexpr int kMaxFrames = 1'000'000;
+// A date alone (--time 2026-06-21) without --speed: the day, sunrise to sunset, in this
+// much video.
+constexpr double kDayVideoSeconds = 30.0;
 
 struct RenderArgs {
   std::vector<std::string> inputs;
@@ -49,7 +52,7 @@ struct RenderArgs {
   double fps = 30.0;
   std::optional<double> duration;  // track seconds
   std::string from, to;
-  double speed = 1.0;  // track seconds per video second
+  std::optional<double> speed;  // track seconds per video second (default: 1, a day in kDayVideoSeconds)
   std::vector<std::string> tracks;
   std::string aircraft = "glider", altitude = "gnss";
   double exaggeration = 1.0;
@@ -65,6 +68,24 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
+// The daylight (sunrise, sunset; UTC seconds) of --time when it is a date alone, at
+// `place`; nothing for a time. Polar night: one line, with no frames to show; polar
+// day: the whole local day, with a note unless `quiet`.
+std::optional<std::pair<double, double>> daylight(const std::string& time, const sky::Observer& place, bool quiet) {
+  if (time.empty()) return std::nullopt;
+  shading::TimeSpec spec;
+  try {
+    spec = shading::parse_time_spec(time);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // parse_time says what is wrong with it
+  }
+  if (!shading::needs_place(spec)) return std::nullopt;
+  const shading::TimeSeries day = shading::resolve_time_series(spec, place);
+  if (day.instants.empty()) throw std::invalid_argument("--time " + time + ": " + day.note);
+  if (!day.note.empty() && !quiet) std::cerr << "skylit: note: " << day.note << "\n";
+  return std::pair{day.instants.front().unix_seconds, day.instants.back().unix_seconds};
+}
+
 double parse_time(const std::string& text, const char* flag) {
   try {
     return sky::parse_utc_time(text).unix_seconds;
@@ -78,31 +99,37 @@ int run_render(const RenderArgs& a) {
   const bool nadir = a.camera == "ortho-nadir";
   const std::optional<sv::CameraMode> mode = sv::parse_camera_mode(a.camera);
   if (!nadir && !mode) throw std::invalid_argument("--camera '" + a.camera + "' is not follow, orbit, free or ortho-nadir");
-  if (!(a.speed > 0.0) || !std::isfinite(a.speed)) throw std::invalid_argument("--speed must be > 0");
   if (!(a.exaggeration > 0.0) || a.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
   const terrain::HeightField field =
       load_dems_or_scene(a.inputs, a.synthetic, a.scene_size, a.seed, a.quiet ? nullptr : &std::cerr, "skylit");
 
   std::optional<shade::TrackedAircraft> aircraft;
   if (!a.tracks.empty()) aircraft.emplace(a.tracks, a.aircraft, parse_altitude_arg(a.altitude), field);
-  // The span of track time the frames cover.
+  const sky::Observer place = sun_place(a.light.request, field);
+  // The span of track time the frames cover; a date alone is that local day's daylight.
+  const std::optional<std::pair<double, double>> day =
+      a.from.empty() ? daylight(a.light.request.time, place, a.quiet) : std::nullopt;
   double t0 = 0.0;
   if (!a.from.empty()) t0 = parse_time(a.from, "--from");
+  else if (day) t0 = day->first;
   else if (!a.light.request.time.empty()) t0 = parse_time(a.light.request.time, "--time");
   else if (aircraft) t0 = aircraft->start();
   else throw std::invalid_argument("give --time (or --from) for the sun, or a --track whose start sets it");
   double t1 = t0;
   if (!a.to.empty()) t1 = parse_time(a.to, "--to");
   else if (a.duration) t1 = t0 + *a.duration;
+  else if (day) t1 = day->second;
   else if (aircraft) t1 = aircraft->end();
   if (!(t1 >= t0)) throw std::invalid_argument("the frames' end is before their start (--from/--to/--duration)");
+  const double speed = a.speed ? *a.speed : day ? std::max(1.0, (t1 - t0) / kDayVideoSeconds) : 1.0;
+  if (!(speed > 0.0) || !std::isfinite(speed)) throw std::invalid_argument("--speed must be > 0");
   if (a.light.request.sun_azimuth_deg || a.light.request.sun_elevation_deg)
     throw std::invalid_argument("render moves the sun with the clock: give --time, not --sun-azimuth/--sun-elevation");
   // Before the frames are counted (the sink checks it too, after).
   if (!(a.fps > 0.0) || a.fps > kMaxFrameRate)
     throw std::invalid_argument("--fps must be in (0, " + std::to_string(static_cast<int>(kMaxFrameRate)) +
                                 "] frames per second");
-  const double frame_count = 1.0 + std::floor((t1 - t0) / a.speed * a.fps + 1e-9);
+  const double frame_count = 1.0 + std::floor((t1 - t0) / speed * a.fps + 1e-9);
   if (frame_count > kMaxFrames)
     throw std::invalid_argument(std::to_string(static_cast<long long>(frame_count)) + " frames (" +
                                 std::to_string(std::lround(t1 - t0)) + " s of track time at --speed and --fps) are over " +
@@ -116,8 +143,6 @@ int run_render(const RenderArgs& a) {
   so.overwrite = a.overwrite;
   so.frames = frames;
   std::unique_ptr<FrameSink> sink = open_frame_sink(a.output, so);
-
-  const sky::Observer place = sun_place(a.light.request, field);
 
   gpu::GpuRenderer renderer;
   shading::ProductOptions options;
@@ -139,7 +164,7 @@ int run_render(const RenderArgs& a) {
   double read_sum_ms = 0.0;
   ProgressBar progress("render", a.quiet);
   for (int k = 0; k < frames; ++k) {
-    const double t = t0 + k * a.speed / a.fps;
+    const double t = t0 + k * speed / a.fps;
     shading::LightingRequest request = a.light.request;
     request.time = shading::format_instant({t});
     sv::ViewFrame frame;
@@ -221,7 +246,8 @@ void add_render_command(CLI::App& root, Action& run) {
   cmd->add_option("--duration", args->duration, "Seconds of track time (default: the whole track)");
   cmd->add_option("--from", args->from, "First frame's time (ISO 8601 with a zone; default: the track's start)");
   cmd->add_option("--to", args->to, "Last frame's time");
-  cmd->add_option("--speed", args->speed, "Track seconds per video second")->capture_default_str();
+  cmd->add_option("--speed", args->speed,
+                  "Track seconds per video second (default 1; with a date alone, its daylight in 30 s of video)");
   cmd->add_option("--track", args->tracks,
                   "Flight track(s) (IGC, GPX, KML gx:Track, CSV; repeat for several): their aircraft and shadows");
   cmd->add_option("--aircraft", args->aircraft, "The sphere set of --track's aircraft (as shade)")->capture_default_str();
@@ -231,7 +257,9 @@ void add_render_command(CLI::App& root, Action& run) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or notes");
   cmd->add_flag("--timings", args->timings, "Finish each pass before the next and print the mean time per pass");
   args->light.request.sky = "preetham";  // a picture: the sky behind the terrain is seen
-  add_lighting_options(*cmd, args->light, "The time of the first frame without --track (the clock then runs at --speed)");
+  add_lighting_options(*cmd, args->light,
+                       "The time of the first frame without --track (the clock then runs at --speed), or a date "
+                       "alone (2026-06-21): that local day from sunrise to sunset at the DEM");
   cmd->callback([&run, args] { run = [args] { return run_render(*args); }; });
 }
 

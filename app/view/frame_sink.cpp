@@ -86,6 +86,7 @@ class PngFrames final : public FrameSink {
   }
   void finish() override { wait_for_write(); }
   std::string description() const override {
+    if (next_ == 0) return pattern_ + " (PNG frames)";  // none written yet
     return pattern_ + " (" + std::to_string(next_) + " PNG frame" + (next_ == 1 ? "" : "s") + ")";
   }
 
@@ -272,6 +273,7 @@ class FfmpegVideo final : public FrameSink {
     discard();
   }
   std::string description() const override {
+    if (frames_ == 0) return path_.string() + " (" + codec_ + " by ffmpeg)";  // none written yet
     return path_.string() + " (" + std::to_string(frames_) + " frames, " + codec_ + " by ffmpeg)";
   }
 

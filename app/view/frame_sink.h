@@ -31,7 +31,8 @@ class FrameSink {
   virtual void write(std::span<const std::uint8_t> rgb) = 0;
   // Completes the output (the video appears at its path); throws on any failure.
   virtual void finish() = 0;
-  // "frames/f_%05d.png (PNG frames)", "flight.mp4 (H.264, ffmpeg)".
+  // "frames/f_%05d.png (20 PNG frames)", "flight.mp4 (300 frames, H.264 by ffmpeg)"; the
+  // count only once frames are written.
   virtual std::string description() const = 0;
 };
 

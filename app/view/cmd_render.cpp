@@ -4,6 +4,7 @@
 // with the aircraft's soft shadows, to numbered PNGs or a video (frame_sink.h).
 #include "app/commands.h"
 #include "app/common/altitude_arg.h"
+#include "app/common/date_daylight.h"
 #include "app/common/lighting_args.h"
 #include "app/common/progress.h"
 #include "app/common/synthetic_scene.h"
@@ -68,24 +69,6 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
-// The daylight (sunrise, sunset; UTC seconds) of --time when it is a date alone, at
-// `place`; nothing for a time. Polar night: one line, with no frames to show; polar
-// day: the whole local day, with a note unless `quiet`.
-std::optional<std::pair<double, double>> daylight(const std::string& time, const sky::Observer& place, bool quiet) {
-  if (time.empty()) return std::nullopt;
-  shading::TimeSpec spec;
-  try {
-    spec = shading::parse_time_spec(time);
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;  // parse_time says what is wrong with it
-  }
-  if (!shading::needs_place(spec)) return std::nullopt;
-  const shading::TimeSeries day = shading::resolve_time_series(spec, place);
-  if (day.instants.empty()) throw std::invalid_argument("--time " + time + ": " + day.note);
-  if (!day.note.empty() && !quiet) std::cerr << "skylit: note: " << day.note << "\n";
-  return std::pair{day.instants.front().unix_seconds, day.instants.back().unix_seconds};
-}
-
 double parse_time(const std::string& text, const char* flag) {
   try {
     return sky::parse_utc_time(text).unix_seconds;
@@ -108,7 +91,7 @@ int run_render(const RenderArgs& a) {
   const sky::Observer place = sun_place(a.light.request, field);
   // The span of track time the frames cover; a date alone is that local day's daylight.
   const std::optional<std::pair<double, double>> day =
-      a.from.empty() ? daylight(a.light.request.time, place, a.quiet) : std::nullopt;
+      a.from.empty() ? date_daylight(a.light.request.time, place, a.quiet ? nullptr : &std::cerr) : std::nullopt;
   double t0 = 0.0;
   if (!a.from.empty()) t0 = parse_time(a.from, "--from");
   else if (day) t0 = day->first;

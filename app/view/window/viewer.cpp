@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "app/common/altitude_arg.h"
+#include "app/common/date_daylight.h"
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
 #include "app/view/camera_aim.h"
@@ -176,7 +177,10 @@ Viewer::Viewer(const ViewerOptions& o)
   if (!aircraft_)
     rig_ = sv::CameraRig(ground(), sv::overview_rig_options(field_, static_cast<double>(o.width) / o.height, exaggeration_));
   double t0 = 0.0;
-  if (!o.light.request.time.empty()) t0 = sky::parse_utc_time(o.light.request.time).unix_seconds;
+  if (const auto day = date_daylight(o.light.request.time, place_, o.quiet ? nullptr : &std::cerr))
+    t0 = 0.5 * (day->first + day->second);  // a date alone: midway through its daylight (its solar noon)
+  else if (!o.light.request.time.empty())
+    t0 = sky::parse_utc_time(o.light.request.time).unix_seconds;
   if (aircraft_) {
     timeline_.emplace(aircraft_->start(), aircraft_->end());
     if (!o.light.request.time.empty()) timeline_->scrub(t0);

@@ -33,7 +33,10 @@ void main() {
                    ij.y == 0 ? -0.5 : (ij.y == field_size.y - 1 ? 0.5 : 0.0));
   vec2 t = vec2(ij) + edge;
   vec2 xy = t * vec2(spacing.x, -spacing.y);
-  float z = h * exaggeration - curvatureDrop(xy) - (ring ? node.skirt_m : 0.0);
+  // No neighbour lies beyond the field's edge: a skirt hung there (or the end of one
+  // across a join) would only show below the edge, seen from outside the field.
+  bool outer = ij.x == 0 || ij.y == 0 || ij.x == field_size.x - 1 || ij.y == field_size.y - 1;
+  float z = h * exaggeration - curvatureDrop(xy) - (ring && !outer ? node.skirt_m : 0.0);
   texel = t;
   gl_Position = view_proj * vec4(xy, z, 1.0);
 }

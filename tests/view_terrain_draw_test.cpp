@@ -87,66 +87,74 @@ TEST_F(TerrainDrawTest, ObliqueGroundHasNoCracksBetweenLevels) {
   EXPECT_EQ(magenta, 0) << "pixels where the ground has a crack or a culled face";
 }
 
-// Seen from outside, the field ends at its edge: no skirt hangs below it (a skirt only
-// hides the step to a neighbour, and there is none beyond the edge). Flat ground at
-// 0 m: a pixel whose ray meets z = 0 outside the field sees nothing (before that the
-// ray is above the ground, after it below), one whose ray meets it inside sees ground.
-TEST_F(TerrainDrawTest, NoSkirtHangsBelowTheFieldsEdge) {
-  terrain::HeightField f(512, 512, 30.0);
-  const double dx = f.mean_dx(), dy = f.dy;
-  const int size = 256;
-  CameraPose pose;  // 2 km south of the south edge, 300 m up, looking north 10° down
-  const double pitch = 10.0 * std::numbers::pi / 180.0;
-  pose.eye = {0.5 * (f.width - 1) * dx, -(f.height - 0.5) * dy - 2000.0, 300.0};
-  pose.forward = {0.0, std::cos(pitch), -std::sin(pitch)};
-  pose.up = {0.0, std::sin(pitch), std::cos(pitch)};
-  const ViewCamera camera = perspective_camera(pose, f, size, size, 1.0);
+// Seen from outside, the ground ends at its edge: no skirt hangs below it (a skirt only
+// hides the step to a neighbour, and there is none beyond the edge), neither at the
+// field's edge nor where nodata begins (there the surface ends halfway to the first
+// nodata texel, and a skirt of a join running into the hole would show through it).
+// Flat ground at 0 m: a pixel whose ray meets z = 0 outside the valid ground sees
+// nothing (before that the ray is above the ground, after it below), one whose ray
+// meets it inside sees ground.
+TEST_F(TerrainDrawTest, NoSkirtHangsBelowTheGroundsEdge) {
+  for (const int hole_rows : {0, 100}) {  // nodata across the south of the field
+    terrain::HeightField f(512, 512, 30.0);
+    for (int j = f.height - hole_rows; j < f.height; ++j)
+      for (int i = 0; i < f.width; ++i) f.valid[static_cast<std::size_t>(j) * f.width + i] = 0;
+    const double dx = f.mean_dx(), dy = f.dy;
+    const double south = f.height - hole_rows - 0.5;  // the ground's south edge (texel rows)
+    const int size = 256;
+    CameraPose pose;  // 12 km south of the field's south edge, 9 km up, looking north 30° down
+    const double pitch = 30.0 * std::numbers::pi / 180.0;
+    pose.eye = {0.5 * (f.width - 1) * dx, -(f.height - 0.5) * dy - 12000.0, 9000.0};
+    pose.forward = {0.0, std::cos(pitch), -std::sin(pitch)};
+    pose.up = {0.0, std::sin(pitch), std::cos(pitch)};
+    const ViewCamera camera = perspective_camera(pose, f, size, size, 1.0);
 
-  gpu::GpuRenderer renderer;
-  renderer.set_field(f);
-  shading::ProductOptions o;
-  o.march.azimuths = 8;
-  renderer.set_options(o);
-  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
-  TerrainDraw terrain(f);
-  terrain.set_colour(shaded);
-  TerrainStyle style;
-  style.curvature = false;
-  OffscreenTarget target(size, size);
-  target.bind();
-  glEnable(GL_DEPTH_TEST);
-  glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
-  const std::vector<std::uint8_t> rgb = target.read_rgb();
+    gpu::GpuRenderer renderer;
+    renderer.set_field(f);
+    shading::ProductOptions o;
+    o.march.azimuths = 8;
+    renderer.set_options(o);
+    const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+    TerrainDraw terrain(f);
+    terrain.set_colour(shaded);
+    TerrainStyle style;
+    style.curvature = false;
+    OffscreenTarget target(size, size);
+    target.bind();
+    glEnable(GL_DEPTH_TEST);
+    glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
+    const std::vector<std::uint8_t> rgb = target.read_rgb();
 
-  const glm::dmat4 inverse = glm::inverse(camera.proj * camera.view);
-  int outside = 0, outside_drawn = 0, inside = 0, inside_empty = 0;
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) {
-      const double nx = (x + 0.5) / size * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / size * 2.0;  // top row first
-      const glm::dvec4 far = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-      const glm::dvec3 ray = glm::dvec3(far) / far.w - pose.eye;
-      if (ray.z >= 0.0) continue;
-      const glm::dvec3 hit = pose.eye + ray * (-pose.eye.z / ray.z);
-      // Texel coordinates of the hit; the surface spans [−0.5, size − 0.5].
-      const double i = hit.x / dx, j = -hit.y / dy;
-      const double margin = std::min({i + 0.5, f.width - 0.5 - i, j + 0.5, f.height - 0.5 - j});
-      const std::size_t p = (static_cast<std::size_t>(y) * size + x) * 3;
-      const bool empty = rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
-      if (margin < -1.0) {
-        ++outside;
-        outside_drawn += !empty;
-      } else if (margin > 1.0) {
-        ++inside;
-        inside_empty += empty;
+    const glm::dmat4 inverse = glm::inverse(camera.proj * camera.view);
+    int outside = 0, outside_drawn = 0, inside = 0, inside_empty = 0;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const double nx = (x + 0.5) / size * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / size * 2.0;  // top row first
+        const glm::dvec4 far = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+        const glm::dvec3 ray = glm::dvec3(far) / far.w - pose.eye;
+        if (ray.z >= 0.0) continue;
+        const glm::dvec3 hit = pose.eye + ray * (-pose.eye.z / ray.z);
+        // Texel coordinates of the hit; the ground spans [−0.5, width − 0.5] × [−0.5, south].
+        const double i = hit.x / dx, j = -hit.y / dy;
+        const double margin = std::min({i + 0.5, f.width - 0.5 - i, j + 0.5, south - j});
+        const std::size_t p = (static_cast<std::size_t>(y) * size + x) * 3;
+        const bool empty = rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
+        if (margin < -1.0) {
+          ++outside;
+          outside_drawn += !empty;
+        } else if (margin > 1.0) {
+          ++inside;
+          inside_empty += empty;
+        }
       }
-    }
-  ASSERT_GT(outside, 1000) << "the view sees the ground in front of the field";
-  ASSERT_GT(inside, 1000);
-  EXPECT_EQ(outside_drawn, 0) << "pixels drawn below the field's edge";
-  EXPECT_EQ(inside_empty, 0);
+    ASSERT_GT(outside, 1000) << "the view sees the ground in front of the field; hole " << hole_rows;
+    ASSERT_GT(inside, 1000) << hole_rows;
+    EXPECT_EQ(outside_drawn, 0) << "pixels drawn below the ground's edge; hole " << hole_rows;
+    EXPECT_EQ(inside_empty, 0) << hole_rows;
+  }
 }
 
 }  // namespace

@@ -25,6 +25,32 @@ namespace {
 
 using TerrainDrawTest = gpu::testing::GpuTest;
 
+// The terrain of `f`, coloured by its `shaded` frame, seen by `camera` in a size² frame
+// cleared to magenta: RGB, top row first.
+std::vector<std::uint8_t> draw_terrain(const terrain::HeightField& f, const ViewCamera& camera, int size,
+                                       const TerrainStyle& style) {
+  gpu::GpuRenderer renderer;
+  renderer.set_field(f);
+  shading::ProductOptions o;
+  o.march.azimuths = 8;
+  renderer.set_options(o);
+  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+  TerrainDraw terrain(f);
+  terrain.set_colour(shaded);
+  OffscreenTarget target(size, size);
+  target.bind();
+  glEnable(GL_DEPTH_TEST);
+  glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
+  return target.read_rgb();
+}
+
+bool magenta(const std::vector<std::uint8_t>& rgb, std::size_t p) {
+  return rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
+}
+
 TEST_F(TerrainDrawTest, ObliqueGroundHasNoCracksBetweenLevels) {
   gpu::testing::SyntheticFieldSpec spec;
   spec.width = spec.height = 512;
@@ -66,25 +92,10 @@ TEST_F(TerrainDrawTest, ObliqueGroundHasNoCracksBetweenLevels) {
   for (const LodNode& n : TerrainLod(f).select(lod_view)) strides.insert(n.stride);
   ASSERT_GE(strides.size(), 3u) << "patches of several strides meet in this view";
 
-  gpu::GpuRenderer renderer;
-  renderer.set_field(f);
-  shading::ProductOptions o;
-  o.march.azimuths = 8;
-  renderer.set_options(o);
-  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
-  TerrainDraw terrain(f);
-  terrain.set_colour(shaded);
-  OffscreenTarget target(size, size);
-  target.bind();
-  glEnable(GL_DEPTH_TEST);
-  glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  terrain.draw(lod_view.view_proj, camera.eye, camera.pixels_per_radian, style);
-  const std::vector<std::uint8_t> rgb = target.read_rgb();
-  int magenta = 0;
-  for (std::size_t p = 0; p < rgb.size(); p += 3) magenta += rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
-  EXPECT_EQ(magenta, 0) << "pixels where the ground has a crack or a culled face";
+  const std::vector<std::uint8_t> rgb = draw_terrain(f, camera, size, style);
+  int empty = 0;
+  for (std::size_t p = 0; p < rgb.size(); p += 3) empty += magenta(rgb, p);
+  EXPECT_EQ(empty, 0) << "pixels where the ground has a crack or a culled face";
 }
 
 // Seen from outside, the ground ends at its edge: no skirt hangs below it (a skirt only
@@ -109,24 +120,9 @@ TEST_F(TerrainDrawTest, NoSkirtHangsBelowTheGroundsEdge) {
     pose.up = {0.0, std::sin(pitch), std::cos(pitch)};
     const ViewCamera camera = perspective_camera(pose, f, size, size, 1.0);
 
-    gpu::GpuRenderer renderer;
-    renderer.set_field(f);
-    shading::ProductOptions o;
-    o.march.azimuths = 8;
-    renderer.set_options(o);
-    const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
-    TerrainDraw terrain(f);
-    terrain.set_colour(shaded);
     TerrainStyle style;
     style.curvature = false;
-    OffscreenTarget target(size, size);
-    target.bind();
-    glEnable(GL_DEPTH_TEST);
-    glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
-    const std::vector<std::uint8_t> rgb = target.read_rgb();
+    const std::vector<std::uint8_t> rgb = draw_terrain(f, camera, size, style);
 
     const glm::dmat4 inverse = glm::inverse(camera.proj * camera.view);
     int outside = 0, outside_drawn = 0, inside = 0, inside_empty = 0;
@@ -141,7 +137,7 @@ TEST_F(TerrainDrawTest, NoSkirtHangsBelowTheGroundsEdge) {
         const double i = hit.x / dx, j = -hit.y / dy;
         const double margin = std::min({i + 0.5, f.width - 0.5 - i, j + 0.5, south - j});
         const std::size_t p = (static_cast<std::size_t>(y) * size + x) * 3;
-        const bool empty = rgb[p] == 255 && rgb[p + 1] == 0 && rgb[p + 2] == 255;
+        const bool empty = magenta(rgb, p);
         if (margin < -1.0) {
           ++outside;
           outside_drawn += !empty;

@@ -20,6 +20,7 @@
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
 #include "shading/lighting.h"
+#include "shading/sky/time_utc.h"
 #include "shading/time_series.h"
 
 namespace skylit::testing {
@@ -265,6 +266,28 @@ TEST(ViewWindow, ThroughATracksGapTheCameraHoldsAndTheHorizonsStay) {
   }
   EXPECT_GE(in_gap, 5);
   EXPECT_GE(flown, 3);
+}
+
+// A date alone opens the clock midway through that day's daylight at the place, as
+// `skylit sun` gives its sunrise and sunset.
+TEST(ViewWindow, ADateAloneOpensAtItsSolarNoon) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  const std::string place = " --lat 47 --lon 7.9";
+  const skylit::testing::Run r = run_view("--synthetic --scene-size 128 --time 2026-06-21" + place +
+                                          " --width 160 --height 90 --frames 1 --screenshot " + dir.file("d.png") +
+                                          " --camera-log " + dir.file("c.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::vector<CameraRow> log = read_camera_log(dir.file("c.csv"));
+  ASSERT_EQ(log.size(), 1u);
+  const skylit::testing::Run sun = run_skylit("sun" + place + " --time 2026-06-21T12:00:00Z --json");
+  ASSERT_EQ(sun.status, 0) << sun.out;
+  const auto event = [&](const std::string& key) {
+    const auto at = sun.out.find("\"" + key + "\": \"") + key.size() + 5;
+    return sky::parse_utc_time(sun.out.substr(at, sun.out.find('"', at) - at)).unix_seconds;
+  };
+  EXPECT_NEAR(log[0].time, 0.5 * (event("sunrise") + event("sunset")), 1.0) << sun.out;
+  EXPECT_NEAR(log[0].time, event("solar_noon"), 120.0) << sun.out;
 }
 
 struct BrushRun {

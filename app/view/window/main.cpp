@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
   app.add_flag("--overwrite", o.overwrite, "Replace existing screenshots");
   app.add_flag("-q,--quiet", o.quiet, "No notes");
   app.add_flag("--timings", o.timings, "Print the mean time per pass of the frames after the first at exit");
-  skylit::app::add_lighting_options(app, o.light, "The clock's start (with --track: a time within it)");
+  skylit::app::add_lighting_options(
+      app, o.light, "The clock's start (with --track: a time within it), or a date alone (2026-06-21): its solar noon");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -115,6 +115,25 @@ TEST(CameraRig, NeverBelowGroundWhateverTheInput) {
   }
 }
 
+// Free flight starts where the orbit settles, looking at the target, and no update
+// without input moves it.
+TEST(CameraRig, FreeSettlesWhereTheOrbitDoes) {
+  CameraRig orbit(flat), free(flat);
+  free.set_mode(CameraMode::Free);
+  for (CameraRig* r : {&orbit, &free}) {
+    r->set_target({{500.0, -500.0, 400.0}, 90.0});
+    r->settle();
+  }
+  EXPECT_LT(glm::distance(free.pose().eye, orbit.pose().eye), 1e-9);
+  EXPECT_NEAR(glm::dot(free.pose().forward, glm::normalize(glm::dvec3(500.0, -500.0, 400.0) - free.pose().eye)), 1.0,
+              1e-12);
+  const CameraPose settled = free.pose();
+  free.set_target({{900.0, -500.0, 400.0}, 90.0});  // the target flies on; free stays
+  free.update(1.0, {});
+  EXPECT_EQ(free.pose().eye, settled.eye);
+  EXPECT_EQ(free.mode(), CameraMode::Free);
+}
+
 TEST(CameraRig, SwitchingModesStartsFromThePose) {
   CameraRig rig(flat);
   rig.set_mode(CameraMode::Follow);

@@ -206,7 +206,12 @@ glm::dvec3 CameraRig::wanted_offset(const CameraInput& input) {
 }
 
 void CameraRig::settle() {
-  if (mode_ == CameraMode::Free) return;
+  if (mode_ == CameraMode::Free) {  // free flight starts where the orbit settles
+    mode_ = CameraMode::Orbit;
+    settle();
+    mode_ = CameraMode::Free;
+    return;
+  }
   restart_blend_ = false;
   eye_rel_ = wanted_offset({});
   focus_rel_ = glm::dvec3(0.0);

@@ -89,7 +89,8 @@ class CameraRig {
   void update(double dt_s, const CameraInput& input);
 
   // A cut to where a long update settles for the current target (follow, orbit; free
-  // mode keeps its pose): only the end is lifted above ground, nothing sweeps between.
+  // mode cuts to where the orbit settles, looking at the target, and flies from there):
+  // only the end is lifted above ground, nothing sweeps between.
   void settle();
 
   const CameraPose& pose() const { return pose_; }

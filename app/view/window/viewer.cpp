@@ -456,11 +456,8 @@ int Viewer::run() {
         panel_.camera = static_cast<int>(sv::CameraMode::Free);
         rig_.set_mode(sv::CameraMode::Free);
         rig_.set_pose(*pose);
-      } else if (k == 0) {  // a cut to the camera; free mode starts where orbit settles
-        const sv::CameraMode mode = rig_.mode();
-        if (mode == sv::CameraMode::Free) rig_.set_mode(sv::CameraMode::Orbit);
+      } else if (k == 0) {  // a cut to the camera (free mode: where the orbit settles)
         rig_.settle();
-        if (mode == sv::CameraMode::Free) rig_.set_mode(mode);
       } else {
         rig_.update(dt, camera_input(input_));
       }

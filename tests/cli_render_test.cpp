@@ -5,6 +5,7 @@
 #include "app/view/frame_sink.h"
 #include "cli_test_util.h"
 #include "shading/sky/time_utc.h"
+#include "view/trail_colour.h"
 
 #include <gtest/gtest.h>
 
@@ -230,6 +231,34 @@ TEST(Render, ADateAloneRendersItsDaylight) {
   EXPECT_NEAR(end, field("sunset"), 1.0) << sun << r.out;
 }
 
+// The tracks' trails are drawn over the terrain in altitude colours (viridis), and not
+// at all with --trail off: the two frames differ only in trail-coloured pixels.
+TEST(Render, TrailIsDrawnUnlessOff) {
+  ScratchDir dir;
+  const std::string common = " --synthetic --scene-size 256 --track " + kTrack +
+                             " --from 2026-06-21T10:05:00Z --duration 0 --size 320x180 -q -o ";
+  for (const char* trail : {"off", "altitude"}) {
+    const auto r = run_skylit("render" + common + dir.file(std::string(trail) + "_%d.png") + " --trail " + trail, true);
+    ASSERT_EQ(r.status, 0) << r.out;
+  }
+  const auto off = png_rgb(dir.file("off_0.png")), on = png_rgb(dir.file("altitude_0.png"));
+  ASSERT_EQ(off.size(), on.size());
+  int changed = 0, off_ramp = 0;
+  for (std::size_t p = 0; p < on.size(); p += 3) {
+    if (on[p] == off[p] && on[p + 1] == off[p + 1] && on[p + 2] == off[p + 2]) continue;
+    ++changed;
+    double nearest = 1e9;  // to the viridis ramp, in codes
+    for (int k = 0; k <= 64; ++k) {
+      const glm::vec3 c = skylit::view::ramp_colour(skylit::view::TrailColour::Altitude, k / 64.0) * 255.0f;
+      nearest = std::min(nearest, static_cast<double>(std::max({std::abs(c.r - on[p]), std::abs(c.g - on[p + 1]),
+                                                                  std::abs(c.b - on[p + 2])})));
+    }
+    off_ramp += nearest > 48.0;  // the line's antialiased rim blends with the ground
+  }
+  EXPECT_GT(changed, 50) << "the trail is drawn";
+  EXPECT_LT(off_ramp, changed / 3) << "in the altitude ramp's colours";
+}
+
 TEST(Render, BadInputFailsInOneLine) {
   ScratchDir dir;
   auto fails = [&](const std::string& args, const std::string& needle) {
@@ -243,6 +272,7 @@ TEST(Render, BadInputFailsInOneLine) {
   fails("--synthetic --time 2026-06-21T10:00Z --camera sideways" + out, "--camera 'sideways'");
   fails("--synthetic --time 2026-06-21T10:00Z --size 640" + out, "WIDTHxHEIGHT");
   fails("--synthetic" + out, "--time");
+  fails("--synthetic --time 2026-06-21T10:00Z --trail rainbow" + out, "--trail 'rainbow'");
   fails("--synthetic --time 2026-12-21 --lat 85 --lon 0" + out, "polar night");
   fails("--synthetic --time 2026-06-21T10:00Z --size 641x360 -o " + dir.file("v.mp4"), "even");
   fails("--synthetic --time 2026-06-21T10:00Z --speed 0" + out, "--speed");

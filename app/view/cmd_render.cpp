@@ -9,6 +9,7 @@
 #include "app/common/progress.h"
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
+#include "app/view/aircraft_trails.h"
 #include "app/view/camera_aim.h"
 #include "app/view/frame_sink.h"
 #include "gpu/gpu_renderer.h"
@@ -56,6 +57,7 @@ struct RenderArgs {
   std::optional<double> speed;  // track seconds per video second (default: 1, a day in kDayVideoSeconds)
   std::vector<std::string> tracks;
   std::string aircraft = "glider", altitude = "gnss";
+  std::string trail = "altitude";  // aircraft_trails.h
   double exaggeration = 1.0;
   bool overwrite = false, quiet = false, timings = false;
   LightingArgs light;
@@ -83,6 +85,8 @@ int run_render(const RenderArgs& a) {
   const std::optional<sv::CameraMode> mode = sv::parse_camera_mode(a.camera);
   if (!nadir && !mode) throw std::invalid_argument("--camera '" + a.camera + "' is not follow, orbit, free or ortho-nadir");
   if (!(a.exaggeration > 0.0) || a.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
+  const auto trail = parse_trail(a.trail);
+  if (!trail) throw std::invalid_argument("--trail '" + a.trail + "' is not altitude, climb or off");
   const terrain::HeightField field =
       load_dems_or_scene(a.inputs, a.synthetic, a.scene_size, a.seed, a.quiet ? nullptr : &std::cerr, "skylit");
 
@@ -133,6 +137,9 @@ int run_render(const RenderArgs& a) {
   sv::SceneView scene(renderer, field, options, aircraft.has_value());
   sv::LightingReuse lighting_reuse(sv::kSunTolerance, sv::kSkyTolerance);
   sv::OffscreenTarget target(width, height);
+  // The straight-down frame is the export's picture: no trail over it.
+  const std::unique_ptr<sv::TrailDraw> trails =
+      aircraft && *trail != Trail::Off && !nadir ? make_trails(*aircraft, trail_colour(*trail)) : nullptr;
   sv::CameraRig rig(sv::ground_of(field, a.exaggeration), aircraft ? sv::RigOptions{}
                              : sv::overview_rig_options(field, static_cast<double>(width) / height, a.exaggeration));
   CameraAim aim(field);
@@ -169,6 +176,7 @@ int run_render(const RenderArgs& a) {
     }
     target.bind();
     const sv::ViewTimings pass = scene.draw(frame, width, height, a.timings);
+    if (trails) trails->draw(frame.camera.proj * frame.camera.view, a.exaggeration, sv::drawn_drop(frame), t);
     const auto read_start = std::chrono::steady_clock::now();
     const std::vector<std::uint8_t> rgb = target.read_rgb();
     const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
@@ -235,6 +243,8 @@ void add_render_command(CLI::App& root, Action& run) {
                   "Flight track(s) (IGC, GPX, KML gx:Track, CSV; repeat for several): their aircraft and shadows");
   cmd->add_option("--aircraft", args->aircraft, "The sphere set of --track's aircraft (as shade)")->capture_default_str();
   cmd->add_option("--track-altitude", args->altitude, "--track's altitude: gnss | pressure | agl-offset=M")->capture_default_str();
+  cmd->add_option("--trail", args->trail, "The tracks' trails up to each frame's time: altitude | climb | off")
+      ->capture_default_str();
   cmd->add_option("--exaggeration", args->exaggeration, "Vertical exaggeration of the drawn terrain")->capture_default_str();
   cmd->add_flag("--overwrite", args->overwrite, "Replace an existing output");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or notes");

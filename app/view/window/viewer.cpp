@@ -21,6 +21,7 @@
 #include "app/common/date_daylight.h"
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
+#include "app/view/aircraft_trails.h"
 #include "app/view/camera_aim.h"
 #include "app/view/window/glfw_window.h"
 #include "app/view/window/key_bindings.h"
@@ -352,15 +353,7 @@ void Viewer::build_trails() {
   trail_colour_ = panel_.trail;
   trails_.reset();
   if (trail_colour_ == 0) return;
-  const auto colour = trail_colour_ == 1 ? sv::TrailColour::Altitude : sv::TrailColour::ClimbRate;
-  std::vector<sv::TrailPolyline> lines;
-  for (std::size_t k = 0; k < aircraft_->tracks(); ++k)
-    if (const flight::TrackSampler* s = aircraft_->sampler(k)) {
-      std::vector<sv::TrailPolyline> l =
-          sv::trail_polylines(s->fixes(), [this](const glm::dvec3& p) { return aircraft_->to_field(p); }, colour);
-      lines.insert(lines.end(), l.begin(), l.end());
-    }
-  trails_ = std::make_unique<sv::TrailDraw>(lines);
+  trails_ = make_trails(*aircraft_, trail_colour_ == 1 ? sv::TrailColour::Altitude : sv::TrailColour::ClimbRate);
 }
 
 // The window's back buffer with the panel (for the docs and tests of what a person sees).

@@ -293,8 +293,9 @@ TEST_F(TrailDrawTest, ASegmentFromBehindTheEyeIsDrawnInFrontOfIt) {
       const Projected q = project(glm::mix(behind, ahead, t));
       ASSERT_TRUE(inside(q.pixel)) << t;
       EXPECT_TRUE(drawn_near(img, q.pixel, 1)) << "z " << z_behind << ", t = " << t;
-      if (t < 1.0)  // at its width: the end behind the eye moved in front of it, not projected
+      if (t < 1.0) {  // at its width: the end behind the eye moved in front of it, not projected
         EXPECT_NEAR(lit_in_row(img, static_cast<int>(q.pixel.y)), kTrailWidthPx, 1.0) << "z " << z_behind << ", t = " << t;
+      }
     }
   }
 }

@@ -20,12 +20,11 @@ const glm::dvec3 kUp(0, 0, 1);
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Heading (rad clockwise from north) and elevation of a unit direction.
+}  // namespace
+
 glm::dvec3 direction(double yaw, double pitch) {
   return {std::sin(yaw) * std::cos(pitch), std::cos(yaw) * std::cos(pitch), std::sin(pitch)};
 }
-
-}  // namespace
 
 std::optional<CameraMode> parse_camera_mode(std::string_view name) {
   if (name == "follow") return CameraMode::Follow;

@@ -20,6 +20,10 @@ struct CameraPose {
   glm::dvec3 up{0, 0, 1};       // unit, orthogonal to forward
 };
 
+// The unit direction of a heading (rad clockwise from north) and an elevation (rad up):
+// where the orbit's eye lies from its target, reversed (−distance · direction(yaw, −pitch)).
+glm::dvec3 direction(double yaw, double pitch);
+
 // Ground height (m) at field-frame (x, y): the caller samples the height field
 // (bilinear); outside the field it returns the nearest edge's height. NaN: no ground.
 using GroundHeight = std::function<double(double x, double y)>;

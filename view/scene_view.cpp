@@ -62,8 +62,8 @@ RigOptions overview_rig_options(const terrain::HeightField& field, double aspect
   const double tan_v = 0.95 * std::tan(0.5 * glm::radians(kFovyDeg)), tan_h = tan_v * aspect;
   const double dx = field.mean_dx(), dy = field.dy;
   // The field's rim at its heights (at most 256 points an edge) and its highest texel.
-  std::vector<glm::dvec3> box;
-  const auto add = [&](int i, int j) { box.push_back({i * dx, -j * dy, field.at(i, j) * exaggeration}); };
+  std::vector<glm::dvec3> rim;
+  const auto add = [&](int i, int j) { rim.push_back({i * dx, -j * dy, field.at(i, j) * exaggeration}); };
   for (int k = 0; k <= 256; ++k) {
     const int i = (field.width - 1) * k / 256, j = (field.height - 1) * k / 256;
     add(i, 0);
@@ -71,24 +71,26 @@ RigOptions overview_rig_options(const terrain::HeightField& field, double aspect
     add(0, j);
     add(field.width - 1, j);
   }
-  const auto top = std::max_element(field.heights.begin(), field.heights.end()) - field.heights.begin();
-  add(static_cast<int>(top % field.width), static_cast<int>(top / field.width));
-  const glm::dvec2 z = height_range(field) * exaggeration;
+  const auto [low, top] = std::minmax_element(field.heights.begin(), field.heights.end());
+  const auto highest = top - field.heights.begin();
+  add(static_cast<int>(highest % field.width), static_cast<int>(highest / field.width));
+  const double relief = (*top - *low) * exaggeration;
   const glm::dvec3 target = field_centre_target(field, exaggeration).position;
-  // Whether the box is in view from `distance` along heading `yaw`, looking at the target.
+  // Whether the rim is in view from `distance` along heading `yaw`, looking at the target
+  // (where the orbit puts its eye).
   const auto in_view = [&](double yaw, double distance) {
-    const glm::dvec3 f{std::sin(yaw) * std::cos(pitch), std::cos(yaw) * std::cos(pitch), -std::sin(pitch)};
+    const glm::dvec3 f = direction(yaw, -pitch);
     const glm::dvec3 eye = target - distance * f;
     const glm::dvec3 right = glm::normalize(glm::cross(f, glm::dvec3(0.0, 0.0, 1.0))), up = glm::cross(right, f);
-    return std::all_of(box.begin(), box.end(), [&](const glm::dvec3& p) {
+    return std::all_of(rim.begin(), rim.end(), [&](const glm::dvec3& p) {
       const glm::dvec3 v = p - eye;
       const double depth = glm::dot(v, f);
       return depth > 0.0 && std::abs(glm::dot(v, right)) <= tan_h * depth && std::abs(glm::dot(v, up)) <= tan_v * depth;
     });
   };
-  const double span = field_diagonal(field) + (z.y - z.x);
+  const double span = field_diagonal(field) + relief;
   double distance = 0.0;
-  for (int k = 0; k < 72; ++k) {  // every 5°: the box's corners turn slowly with the heading
+  for (int k = 0; k < 72; ++k) {  // every 5°: the rim turns slowly with the heading
     const double yaw = k * std::numbers::pi / 36.0;
     double lo = distance, hi = std::max(distance, 1.0);
     while (!in_view(yaw, hi) && hi < 1e3 * span) hi *= 2.0;

@@ -68,7 +68,7 @@ sv::CameraPose script_pose(const ScriptEvent& e) {
   const double h = glm::radians(e.heading_deg), p = glm::radians(e.pitch_deg);
   sv::CameraPose pose;
   pose.eye = e.eye;
-  pose.forward = {std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
+  pose.forward = sv::direction(h, p);
   const glm::dvec3 right{std::cos(h), -std::sin(h), 0.0};
   pose.up = glm::normalize(glm::cross(right, pose.forward));
   return pose;

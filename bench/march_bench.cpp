@@ -28,6 +28,7 @@
 #include "shading/horizon/horizon_march.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
+#include "shading/sun_light.h"
 #include "terrain/height_field.h"
 #include "terrain/pyramid.h"
 #include "terrain/synthetic.h"
@@ -35,9 +36,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <random>
 #include <utility>
 #include <vector>
@@ -231,6 +234,20 @@ BENCHMARK(BM_SweepFarSlopes)
     ->ArgsProduct({{256, 1024}, {4}, {1, 2}, {1, 0}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+
+// The sun's sweep (K 8, 3 lines, shading::sun_march_options) with the floor of a sun
+// at `elevation` degrees (shading::sun_sweep_floor; 0: no floor), one thread, 1024²:
+// what the floor saves by the sun's height.
+void BM_SunSweepFloor(benchmark::State& state) {
+  const tr::HeightField& field = scene(1024);
+  const shading::SunShadowOptions sun;
+  const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(1, 12));
+  const double elevation = static_cast<double>(state.range(0)) * std::numbers::pi / 180.0;
+  const double floor = elevation > 0.0 ? shading::sun_sweep_floor(elevation, sun) : -std::numeric_limits<double>::infinity();
+  for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, sun.march, 1, floor).data());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
+}
+BENCHMARK(BM_SunSweepFloor)->ArgNames({"elevation"})->DenseRange(0, 60, 10)->Arg(89)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // exact = true vs the default march, 64² (see the header comment).
 void BM_ComputeProductExact(benchmark::State& state) {

@@ -221,11 +221,14 @@ struct SweepTextures {
 // lines into `far` (one layer per band), in dispatches whose hull scratch fits the budget.
 // Without a kernel (Impl::sweep_kernel on the host), the same lines swept on the host's cores instead,
 // layer by layer.
+// The host takes a floor for the slopes (horizon::sweep_far_slopes; the kernel sweeps
+// every slope exactly, which the floor allows).
 void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field, const horizon::MarchOptions& o,
-                const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures) {
+                const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures,
+                double floor_slope = -std::numeric_limits<double>::infinity()) {
   if (!kernel) {
     for (std::size_t k = 0; k < headings.size(); ++k)
-      far.upload_layer(static_cast<int>(k), horizon::sweep_far_slopes(field, headings[k], o, 0));
+      far.upload_layer(static_cast<int>(k), horizon::sweep_far_slopes(field, headings[k], o, 0, floor_slope));
     return;
   }
   const ComputeProgram& sweep = *kernel;
@@ -302,7 +305,8 @@ const TextureArray& sun_far_slopes(const ComputeProgram* sweep, const terrain::H
                                    const shading::ProductOptions& o, horizon::Heading u, SweepTextures& textures) {
   const TextureArray& far =
       SweepTextures::array(textures.sun_far, textures.sun_far_size, field.width, field.height, 1);
-  sweep_pass(sweep, field, shading::sun_shadow_options(o).march, {u}, far, textures);
+  const shading::SunShadowOptions sun = shading::sun_shadow_options(o);
+  sweep_pass(sweep, field, sun.march, {u}, far, textures, shading::sun_sweep_floor(sky::elevation_of(o.lighting->sun.direction), sun));
   return far;
 }
 
@@ -557,8 +561,11 @@ struct GpuProductPipeline::Impl {
     heights_tex.bind_sampler(kHeights);
     row_dx_tex.bind_sampler(kRowDx);
     double sweep_ms = 0.0;
+    // The swept far slopes hold below the floor only for a sun at most half the floor's
+    // margin lower (shading::sun_sweep_floor).
     const bool reuse_far = swept && sun_far_valid && sun_far_field_id == f.id.value() && sun_far_revision == f.revision &&
-                           horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance;
+                           horizon::heading_angle(sun_far_heading, sun_heading) <= sun_heading_tolerance &&
+                           sky::elevation_of(o.lighting->sun.direction) >= sun_far_elevation - 0.5 * shading::kSunFloorMargin;
     t.sun_far_reused = reuse_far;
     SunVariant variant = swept ? kSunSweep : kSunMarch;
     if (reuse_far) {
@@ -586,6 +593,7 @@ struct GpuProductPipeline::Impl {
       sun_far_revision = f.revision;
       sun_far_heading = sun_heading;
       sun_far_direction = o.lighting->sun.direction;
+      sun_far_elevation = sky::elevation_of(o.lighting->sun.direction);
       const std::size_t bytes = 2 * f.size() * sizeof(float);  // elevations, then margins
       if (sun_far_valid) try {
           check_storage_size(bytes, "GPU pipeline: the sun's kept horizon");
@@ -659,6 +667,7 @@ struct GpuProductPipeline::Impl {
   std::uint64_t sun_far_field_id = 0, sun_far_revision = 0;
   horizon::Heading sun_far_heading;
   glm::dvec3 sun_far_direction{0.0, 0.0, 1.0};  // the sun they were swept for
+  double sun_far_elevation = 0.0;               // its elevation (rad)
   std::optional<GpuPyramid> pyramid;       // the multi-resolution march's pyramid, built on the GPU
   std::uint64_t pyramid_field_id = 0, pyramid_revision = 0;  // the field it was built from
   // The pyramid of the resident field `f`: updated in place after one edit of the field it

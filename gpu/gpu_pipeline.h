@@ -115,7 +115,8 @@ class GpuProductPipeline {
   // Where the sun's horizon is swept (shading::sun_sweeps), keep each texel's horizon
   // elevation along the sun's heading (far slopes and near steps, 4 B a texel) for later
   // compute()s on the same field revision while the heading stays within `radians` of
-  // the one it was swept along; the disc's pass still runs for the frame's own sun. A
+  // the one it was swept along (and the sun no more than half of shading::kSunFloorMargin
+  // lower: the sweep's floor); the disc's pass still runs for the frame's own sun. A
   // slope from k texels away then belongs to a ray up to k·radians texels off the sun's
   // (docs/accuracy.md measures what that costs).
   // 0, the default: every compute() sweeps, as the reference does.

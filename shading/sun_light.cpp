@@ -106,6 +106,12 @@ void validate(const SunShadowOptions& o) {
   }
 }
 
+double sun_sweep_floor(double elevation, const SunShadowOptions& options) {
+  const double floor = elevation - options.radius - kSunFloorMargin;
+  return elevation >= kSunFloorMinElevation && floor < kHalfPi ? std::tan(floor)
+                                                                : -std::numeric_limits<double>::infinity();
+}
+
 bool sun_sweeps(const terrain::HeightField& field, const SunShadowOptions& options) {
   return options.horizon == SunHorizon::Swept && horizon::sweep_applicable(field, options.march);
 }
@@ -131,7 +137,8 @@ std::vector<float> shadow_fraction_field(const terrain::HeightField& field, SunA
     marcher = std::make_unique<horizon::HorizonMarcher>(field, options.march);
   std::vector<std::uint16_t> far;  // codes (horizon_sweep.h)
   if (swept)
-    far = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(sun.azimuth), options.march, options.threads);
+    far = horizon::sweep_far_slopes(field, horizon::heading_from_geographic(sun.azimuth), options.march, options.threads,
+                                    sun_sweep_floor(e_s, options));
 
   std::vector<float> out(field.size(), std::numeric_limits<float>::quiet_NaN());
   auto march_at = [&](int i, int j, double x) {

@@ -29,6 +29,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <numbers>
 #include <vector>
 
 namespace skylit::shading {
@@ -59,6 +60,20 @@ struct SunShadowOptions {
 // Whether shadow_fraction_field sweeps the sun's horizon on `field` (Swept, and the
 // sweep applies to it); every backend decides by this.
 bool sun_sweeps(const terrain::HeightField& field, const SunShadowOptions& options);
+
+// The sun's sweep needs a far slope exactly only where it may reach the disc: the floor
+// (tan) under which horizon::sweep_far_slopes may lower it lies kSunFloorMargin below
+// the disc's lowest edge, e − r − margin. A margin ≥ r keeps every result bit for bit:
+// a horizon under the floor sits 2 radii or more below the disc's centre, where the
+// clip square [−2, 2]² of sun_disc.h (and sun_shadow.comp's closed form) no longer sees
+// it. Frames that keep the swept horizon for a later sun
+// (GpuProductPipeline::set_sun_heading_tolerance) may take it while the sun stands at
+// most kSunFloorMargin / 2 lower. Below kSunFloorMinElevation, −∞ (no floor): a low
+// sun's floor settles too few texels to pay for the bound (BM_SunSweepFloor; measured
+// in docs/performance.md, session 33: the break-even lies at 15–30° by the DEM).
+inline constexpr double kSunFloorMargin = 1.0 * std::numbers::pi / 180.0;
+inline constexpr double kSunFloorMinElevation = 30.0 * std::numbers::pi / 180.0;
+double sun_sweep_floor(double elevation, const SunShadowOptions& options);
 
 // Throws std::invalid_argument on bad options (radius ∉ (0, π/4), columns ∉ [2, 65],
 // bad march options).

@@ -3,6 +3,8 @@
 // sun's irradiance.
 #include "horizon_scenes.h"
 
+#include "shading/horizon/horizon_sweep.h"
+#include "shading/horizon/surface_normals.h"
 #include "shading/sky/sun_disc.h"
 #include "shading/sun_light.h"
 #include "terrain/synthetic.h"
@@ -10,7 +12,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -147,6 +151,47 @@ TEST(SunShadow, MarchedAndInterpolatedApproachTheExactHorizonOnRoughTerrain) {
   coarse.march.azimuths = 8;
   EXPECT_GT(mean_abs(shadow_fraction_field(f, sun, coarse)), e_marched);
   std::printf("mean |error|: sun march %.4f, sky march %.4f\n", e_marched, e_sky);
+}
+
+TEST(SunShadow, TheSweepsFloorLeavesEveryDiscFractionBitForBit) {
+  // The swept sun lowers far slopes under shading::sun_sweep_floor. Against the far
+  // slopes without it, every texel's disc fraction (sun_disc.h, the tangent plane and
+  // the level horizon) is the same double, and shadow_fraction_field returns it.
+  terrain::SyntheticOptions so;
+  so.width = 120;
+  so.height = 96;
+  const auto f = terrain::make_synthetic_terrain(so);
+  SunShadowOptions o;
+  o.horizon = SunHorizon::Swept;
+  EXPECT_TRUE(std::isinf(sun_sweep_floor(kSunFloorMinElevation - 0.01, o)));
+  std::size_t lowered = 0, partial = 0;
+  for (const double elevation_deg : {30.0, 45.0, 70.0})
+    for (const double azimuth_deg : {140.0, 200.0, 263.0}) {
+      const SunAngles sun{azimuth_deg * kDeg, elevation_deg * kDeg};
+      const double floor = sun_sweep_floor(sun.elevation, o);
+      ASSERT_TRUE(std::isfinite(floor) && floor > 0.0);
+      const horizon::Heading u = horizon::heading_from_geographic(sun.azimuth);
+      const auto full = horizon::sweep_far_slopes(f, u, o.march, 1);
+      const auto floored = horizon::sweep_far_slopes(f, u, o.march, 1, floor);
+      const auto product = shadow_fraction_field(f, sun, o);
+      auto fraction = [&](int i, int j, std::uint16_t code) {
+        const double sigma = std::clamp(horizon::sweep_max_elevation(f, i, j, u, code, o.march), -kPi / 2, kPi / 2);
+        const double y[2] = {(sigma - sun.elevation) / kR, (sigma - sun.elevation) / kR}, x[2] = {-1.0, 1.0};
+        const sky::DiscLine tangent = sky::tangent_plane_line(horizon::horn_normal(f, i, j), sun.azimuth, sun.elevation, kR);
+        return tangent.offset <= -1.0 ? 0.0 : sky::disc_fraction_above_polyline(x, y, &tangent);
+      };
+      for (int j = 0; j < f.height; ++j)
+        for (int i = 0; i < f.width; ++i) {
+          const std::size_t t = static_cast<std::size_t>(j) * f.width + i;
+          const double exact = fraction(i, j, full[t]);
+          ASSERT_EQ(fraction(i, j, floored[t]), exact) << elevation_deg << "° " << azimuth_deg << "° texel " << i << ", " << j;
+          ASSERT_EQ(product[t], static_cast<float>(exact)) << elevation_deg << "° " << azimuth_deg << "°";
+          lowered += floored[t] != full[t];
+          partial += exact > 0.0 && exact < 1.0;
+        }
+    }
+  EXPECT_GT(lowered, f.size());  // the floor did lower codes (of 9 suns' fields)
+  EXPECT_GT(partial, 50u);       // and penumbrae were compared
 }
 
 TEST(SunShadow, NodataIsNanAndOptionsAreValidated) {

@@ -292,10 +292,37 @@ Wanted wanted_lines(const terrain::HeightField& field, const SweepGeometry& g, c
   return w;
 }
 
+// Each texel's 3 × 3 neighbourhood's highest height (clamped at the edges): no bilinear
+// sample within one texel of it rises higher.
+std::vector<float> neighbourhood_max(const terrain::HeightField& field) {
+  const int w = field.width, h = field.height;
+  std::vector<float> across(field.size()), out(field.size());
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      across[static_cast<std::size_t>(j) * w + i] =
+          std::max({field.at(std::max(i - 1, 0), j), field.at(i, j), field.at(std::min(i + 1, w - 1), j)});
+  for (int j = 0; j < h; ++j) {
+    const float* up = &across[static_cast<std::size_t>(std::max(j - 1, 0)) * w];
+    const float* mid = &across[static_cast<std::size_t>(j) * w];
+    const float* down = &across[static_cast<std::size_t>(std::min(j + 1, h - 1)) * w];
+    float* row = &out[static_cast<std::size_t>(j) * w];
+    for (int i = 0; i < w; ++i) row[i] = std::max({up[i], mid[i], down[i]});
+  }
+  return out;
+}
+
+// An observer of a line whose far slope may reach the floor (floored sweeps): its sample
+// index n and texel.
+struct Observer {
+  int n = 0;
+  std::size_t texel = 0;
+  double reach = 0.0;  // the last loop index n whose entering sample (n + delay) may lift it to the floor
+};
+
 }  // namespace
 
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o,
-                                            unsigned threads) {
+                                            unsigned threads, double floor_slope) {
   validate(o);
   if (const std::string why = sweep_inapplicable_reason(field, o); !why.empty())
     throw std::invalid_argument("sweep: " + why);
@@ -318,8 +345,17 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
   const double reach =
       stretched_rows ? owner_reach * *std::max_element(field.dx_per_row.begin(), field.dx_per_row.end()) / g.rows->d_ref()
                      : owner_reach;
+  // The floor (per step): an observer whose far samples all stay below the line of that
+  // slope from it is left kFarCodeNone, or gets the max over fewer samples (header). Without the curvature's drop a slope
+  // only rises (true slope = plain slope − drop·t), and a sample's height is at most the
+  // 3 × 3 maximum around the whole-texel sample beside it. Straight lines only, where a
+  // sample's position is its index.
+  const double floor_step = floor_slope * g.step_m;
+  const bool floored = floor_step > 0.0 && std::isfinite(floor_step) && !g.curved() && drop >= 0.0;
+  const std::vector<float> box = floored ? neighbourhood_max(field) : std::vector<float>();
+  auto index = [&](int i, int j) { return static_cast<std::size_t>(j) * field.width + i; };
   // A line writes only the texels it owns, so lines run on any thread in any order.
-  auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples) {
+  auto sweep_line = [&](int line, WindowHulls& hulls, LineSamples& line_samples, std::vector<Observer>& open) {
     const double c = g.c_low + line * g.spacing();
     fill_line(g, c, line_samples);
     const std::vector<double>&bs = line_samples.b, &ps = line_samples.p;
@@ -341,20 +377,10 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
     while (!beside(beside_high)) --beside_high;
     top = std::min(top, beside_high);
     const int bottom = std::max(wanted.n_low, beside_low - delay);
-    for (int n = top; n >= bottom; --n) {
-      // The sample `delay` steps on enters the hull; Z = z − s²/(2R) (header).
-      if (const int m = n + delay; m < g.samples) {
-        const double b = bs[m];
-        if (b >= -eps && b <= g.extent_b - 1 + eps) {
-          const double z = bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m];
-          hulls.push(ps[m], z);
-        }
-      }
-      if (n % 2 != 0 || n > wanted.n_high) continue;  // observers sit on whole texels of a
-      const double a = g.a_at(n), b = bs[n], pn = ps[n];
-      hulls.expire(pn);
-      // The texels beside b, the nearer first: most observers are settled by `reach`
-      // without owner().
+    // The texels this line owns at observer sample n (whole texels of a), the nearer to
+    // the line first: most are settled by `reach` without owner().
+    auto for_owned = [&](int n, auto&& visit) {
+      const double a = g.a_at(n), b = bs[n];
       const double nearest = std::floor(b + 0.5);
       const double other = b < nearest ? nearest - 1.0 : nearest + 1.0;
       for (const double jb : {nearest, other}) {
@@ -362,12 +388,78 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
         if (std::abs(jb - b) > reach) break;
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
-        const int i = static_cast<int>(q.x), j = static_cast<int>(q.y);
-        // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
-        const double slope = hulls.max_slope(pn, field.at(i, j) - pn * drop * pn);
-        far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
+        visit(static_cast<int>(q.x), static_cast<int>(q.y));
         if (!stretched_rows) break;  // one texel at most
       }
+    };
+    auto observe = [&](int n, int i, int j) {
+      const double pn = ps[n];
+      hulls.expire(pn);
+      // tan = (Z − H₀)/t + s₀/R_eff, per step: ÷ step_m; s₀/R_eff = 2·p·drop/step_m.
+      const double slope = hulls.max_slope(pn, field.at(i, j) - pn * drop * pn);
+      far[static_cast<std::size_t>(j) * field.width + i] = encode_far_slope((slope + 2.0 * pn * drop) / g.step_m);
+    };
+    // The sample `delay` steps on from n enters the hull; Z = z − s²/(2R) (header).
+    auto enter = [&](int n) {
+      if (const int m = n + delay; m < g.samples) {
+        const double b = bs[m];
+        if (b >= -eps && b <= g.extent_b - 1 + eps) hulls.push(ps[m], bilinear_height(field, point(g.a_at(m), b)) - ps[m] * drop * ps[m]);
+      }
+    };
+    if (!floored) {
+      for (int n = top; n >= bottom; --n) {
+        enter(n);
+        if (n % 2 == 0 && n <= wanted.n_high) for_owned(n, [&](int i, int j) { observe(n, i, j); });
+      }
+      return;
+    }
+    // Floored: first the observers whose far slope may reach the floor. The samples
+    // m' − 1 … m' + 1 around a whole-texel sample m' (even) lie within a texel of it and
+    // at positions ≥ m' − 1, so z_m − s·(m − n) ≤ box(m') − s·(m' − 1 − n); the observer
+    // at n is settled when the largest box(m') − s·m' over m' ≥ n + delay − 1 stays
+    // below h − s·(n + 1), less a rounding slack.
+    open.clear();
+    double bound = -std::numeric_limits<double>::infinity();  // max of box(m') − s·m'
+    double peak = -std::numeric_limits<double>::infinity();   // max of box(m')
+    int next = std::min(top + delay + 1, g.samples - 1);
+    next -= next % 2;
+    for (int n = top - top % 2; n >= bottom; n -= 2) {
+      for (; next >= std::max(n + delay - 1, 0); next -= 2) {
+        const double b = bs[next];
+        if (b < -1.0 || b > g.extent_b) continue;  // no sample beside it is pushed
+        const int ia = static_cast<int>(g.a_at(next));
+        const int ib = std::clamp(static_cast<int>(std::floor(b)), 0, g.extent_b - 1);
+        const int ib1 = std::min(ib + 1, g.extent_b - 1);
+        const double high = g.x_dominant ? std::max(box[index(ia, ib)], box[index(ia, ib1)])
+                                         : std::max(box[index(ib, ia)], box[index(ib1, ia)]);
+        bound = std::max(bound, high - floor_step * next);
+        peak = std::max(peak, high);
+      }
+      if (n > wanted.n_high) continue;
+      for_owned(n, [&](int i, int j) {
+        const double h = field.at(i, j);
+        if (bound + floor_step * (n + 1) < h - 1e-9 * (1.0 + std::abs(h))) return;  // below the floor
+        // Samples past n + (peak − h)/s (+ 1 for the positions' slack) stay under its
+        // floor line: only those before it may enter for this observer.
+        open.push_back({n, static_cast<std::size_t>(j) * field.width + i, n + (peak - h) / floor_step + 2.0});
+      });
+    }
+    if (open.empty()) return;
+    // Then the hull for those alone, and of the samples only those some open observer
+    // below may need: sample n + delay enters while the farthest reach of the open
+    // observers at or below n is at least n.
+    for (std::size_t q = open.size() - 1; q-- > 0;) open[q].reach = std::max(open[q].reach, open[q + 1].reach);
+    std::size_t k = 0;  // open[k]: the first open observer at or below n (descending)
+    for (int n = static_cast<int>(std::min<double>(top, std::floor(open.front().reach))); n >= open.back().n; --n) {
+      while (k < open.size() && open[k].n > n) ++k;
+      if (k == open.size()) break;
+      if (open[k].reach < n) {  // nothing open below needs this sample: skip ahead
+        n = static_cast<int>(std::floor(open[k].reach)) + 1;
+        continue;
+      }
+      enter(n);
+      for (std::size_t q = k; q < open.size() && open[q].n == n; ++q)
+        observe(n, static_cast<int>(open[q].texel % field.width), static_cast<int>(open[q].texel / field.width));
     }
   };
   constexpr int kLinesPerTask = 32;  // a task's hull and samples serve its lines
@@ -377,9 +469,10 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
     hulls.limit = window_steps;
     hulls.near.reserve(static_cast<std::size_t>(g.samples));
     LineSamples line_samples;
+    std::vector<Observer> open;
     const int first = wanted.line_low + t * kLinesPerTask;
     for (int line = first; line < std::min(wanted.line_high + 1, first + kLinesPerTask); ++line)
-      sweep_line(line, hulls, line_samples);
+      sweep_line(line, hulls, line_samples, open);
   });
   return far;
 }

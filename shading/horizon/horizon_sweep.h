@@ -50,6 +50,7 @@
 #include "shading/horizon/rhumb_rows.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -130,8 +131,15 @@ double sweep_window_steps(const terrain::HeightField& field, const SweepGeometry
 // (t = (n − n₀)·step_m ≤ the maximum distance, if bounded), encode_far_slope'd (kFarCodeNone if none), with the lines
 // spread over `threads` (0: every core; the result does not depend on it). Throws
 // std::invalid_argument unless applicable.
+// `floor_slope` > 0 (tan; the sun's: only slopes near its disc matter): a texel whose far
+// slope is below it gets a lower code or kFarCodeNone (a max over fewer samples); every
+// other texel gets its code as without the floor. On straight lines (one row spacing) the sweep first bounds each
+// observer's samples by the 3 × 3 maxima of the heights beside them (an O(1) running
+// maximum per sample), then runs the hull for the observers it could not settle and the
+// samples within reach of their floor lines alone; elsewhere the floor changes nothing.
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options,
-                                            unsigned threads = 1);
+                                            unsigned threads = 1,
+                                            double floor_slope = -std::numeric_limits<double>::infinity());
 
 // Raw horizon (rad) of texel (i, j): the near steps of its own ray and its far slope
 // (code from sweep_far_slopes); −∞ if the first step already leaves the grid. Equals

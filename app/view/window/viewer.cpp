@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -352,8 +353,10 @@ void Viewer::build_trails() {
   if (!aircraft_ || panel_.trail == trail_colour_) return;
   trail_colour_ = panel_.trail;
   trails_.reset();
-  if (trail_colour_ == 0) return;
-  trails_ = make_trails(*aircraft_, trail_colour_ == 1 ? sv::TrailColour::Altitude : sv::TrailColour::ClimbRate);
+  static_assert(std::size(kTrailChoices) == static_cast<std::size_t>(Trail::Climb) + 1, "kTrailChoices follow Trail");
+  const Trail trail = static_cast<Trail>(trail_colour_);
+  if (trail == Trail::Off) return;
+  trails_ = make_trails(*aircraft_, trail_colour(trail));
 }
 
 // The window's back buffer with the panel (for the docs and tests of what a person sees).

@@ -15,7 +15,7 @@ inline constexpr const char* kSkyChoices[] = {"uniform", "preetham", "cie:1", "c
 inline constexpr const char* kQualityChoices[] = {"fast", "default", "high"};
 inline constexpr const char* kCameraChoices[] = {"follow", "orbit", "free"};
 inline constexpr const char* kBrushChoices[] = {"off", "raise", "lower", "smooth"};
-inline constexpr const char* kTrailChoices[] = {"off", "altitude", "climb rate"};
+inline constexpr const char* kTrailChoices[] = {"off", "altitude", "climb rate"};  // app::view::Trail's order
 
 // What the user set; the viewer applies changes after the panel is drawn.
 struct PanelState {

@@ -259,6 +259,35 @@ TEST(Render, TrailIsDrawnUnlessOff) {
   EXPECT_LT(off_ramp, changed / 3) << "in the altitude ramp's colours";
 }
 
+// The patches drawn, from --timings' "frame 0: ... (N patches)".
+int patches_drawn(const std::string& out) {
+  const std::size_t at = out.find(" patches)");
+  if (at == std::string::npos) return -1;
+  const std::size_t open = out.rfind('(', at);
+  return std::stoi(out.substr(open + 1, at - open - 1));
+}
+
+TEST(Render, ALargerMeshErrorDrawsFewerPatchesAndMovesOnlyEdges) {
+  // The same frame at 2 px (the default) and 4 px: the LOD keeps fewer, coarser patches,
+  // and the picture changes little (texture-space shading: the light is the same; only
+  // silhouettes move, by a few pixels).
+  ScratchDir dir;
+  const std::string common = " --synthetic --scene-size 512 --track " + kTrack +
+                             " --from 2026-06-21T10:05:00Z --duration 0 --size 640x360 --trail off --timings -q -o ";
+  int patches[2] = {};
+  for (int k : {0, 1}) {
+    const std::string px = k == 0 ? "2" : "4";
+    const auto r = run_skylit("render" + common + dir.file("e" + px + "_%d.png") + " --mesh-error " + px, true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    patches[k] = patches_drawn(r.out);
+  }
+  EXPECT_GT(patches[0], 100) << "the frame shows terrain";
+  EXPECT_LT(patches[1], 0.8 * patches[0]);
+  const auto fine = png_rgb(dir.file("e2_0.png")), coarse = png_rgb(dir.file("e4_0.png"));
+  ASSERT_EQ(fine.size(), coarse.size());
+  EXPECT_LT(rms(fine, coarse), 8.0) << "codes";
+}
+
 TEST(Render, BadInputFailsInOneLine) {
   ScratchDir dir;
   auto fails = [&](const std::string& args, const std::string& needle) {
@@ -273,6 +302,7 @@ TEST(Render, BadInputFailsInOneLine) {
   fails("--synthetic --time 2026-06-21T10:00Z --size 640" + out, "WIDTHxHEIGHT");
   fails("--synthetic" + out, "--time");
   fails("--synthetic --time 2026-06-21T10:00Z --trail rainbow" + out, "--trail 'rainbow'");
+  fails("--synthetic --time 2026-06-21T10:00Z --mesh-error 0.1" + out, "--mesh-error must be 0.5 to 16 pixels");
   fails("--synthetic --time 2026-12-21 --lat 85 --lon 0" + out, "polar night");
   fails("--synthetic --time 2026-06-21T10:00Z --size 641x360 -o " + dir.file("v.mp4"), "even");
   fails("--synthetic --time 2026-06-21T10:00Z --speed 0" + out, "--speed");

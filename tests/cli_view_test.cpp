@@ -432,6 +432,16 @@ TEST(ViewWindow, ABadScreenshotPathFailsBeforeTheWindowOpens) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
 }
 
+TEST(ViewWindow, ABadMeshErrorFailsBeforeTheWindowOpens) {
+  for (const char* px : {"0", "17", "nan"}) {
+    const skylit::testing::Run r =
+        run_view_without_display(std::string("--synthetic --time 2026-06-21T10:00:00Z --mesh-error ") + px);
+    EXPECT_EQ(r.status, 1) << px << ": " << r.out;
+    EXPECT_NE(r.out.find("--mesh-error must be 0.5 to 16 pixels"), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  }
+}
+
 TEST(ViewWindow, BadScriptFailsInOneLineBeforeTheWindowOpens) {
   ScratchDir dir;
   write_text(dir.file("s.txt"), "0 press w\n3 fly away\n");

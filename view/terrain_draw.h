@@ -21,7 +21,7 @@ namespace skylit::view {
 struct TerrainStyle {
   double exaggeration = 1.0;
   bool curvature = true;
-  double max_error_px = 2.0;  // the mesh's geometric error on screen (TerrainLod)
+  double max_error_px = kDefaultMeshErrorPx;  // the mesh's geometric error on screen (TerrainLod)
   shading::ToneCurve tone = shading::ToneCurve::Srgb;
 };
 

@@ -20,6 +20,10 @@
 namespace skylit::view {
 
 inline constexpr int kPatchQuads = 16;  // quads along a node's side
+// The geometric error allowed on screen (pixels): 2 by default (Cesium's default too);
+// more draws fewer triangles, which llvmpipe's terrain pass is nearly proportional to
+// (docs/viewer.md). `--mesh-error` and the window's panel take the range.
+inline constexpr double kDefaultMeshErrorPx = 2.0, kMinMeshErrorPx = 0.5, kMaxMeshErrorPx = 16.0;
 
 struct LodNode {
   int i0 = 0, j0 = 0;  // first texel
@@ -30,7 +34,7 @@ struct LodView {
   glm::dmat4 view_proj{1.0};  // field frame (x east, y north, z up) to clip space
   glm::dvec3 eye{0.0};
   double pixels_per_radian = 1000.0;  // viewport height / (2 tan(fovy / 2)); 0: orthographic
-  double max_error_px = 2.0;          // geometric error allowed on screen (Cesium's default too)
+  double max_error_px = kDefaultMeshErrorPx;  // geometric error allowed on screen
   double exaggeration = 1.0;
   double curvature = 0.0;             // 1 / (2 R) where the drawing drops the ground by d² / (2 R)
 };

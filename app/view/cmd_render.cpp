@@ -10,6 +10,7 @@
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
 #include "app/view/aircraft_trails.h"
+#include "app/view/mesh_error.h"
 #include "app/view/camera_aim.h"
 #include "app/view/frame_sink.h"
 #include "gpu/gpu_renderer.h"
@@ -59,6 +60,7 @@ struct RenderArgs {
   std::string aircraft = "glider", altitude = "gnss";
   std::string trail = "altitude";  // aircraft_trails.h
   double exaggeration = 1.0;
+  double mesh_error_px = skylit::view::kDefaultMeshErrorPx;
   bool overwrite = false, quiet = false, timings = false;
   LightingArgs light;
 };
@@ -85,6 +87,7 @@ int run_render(const RenderArgs& a) {
   const std::optional<sv::CameraMode> mode = sv::parse_camera_mode(a.camera);
   if (!nadir && !mode) throw std::invalid_argument("--camera '" + a.camera + "' is not follow, orbit, free or ortho-nadir");
   if (!(a.exaggeration > 0.0) || a.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
+  check_mesh_error(a.mesh_error_px);
   const auto trail = parse_trail(a.trail);
   if (!trail) throw std::invalid_argument("--trail '" + a.trail + "' is not altitude, climb or off");
   const terrain::HeightField field =
@@ -162,6 +165,7 @@ int run_render(const RenderArgs& a) {
     if (aircraft) frame.shading.spheres = aircraft->spheres_at(t);
     frame.style.tone = options.shaded.tone;
     frame.style.exaggeration = a.exaggeration;
+    frame.style.max_error_px = a.mesh_error_px;
     if (nadir) {
       frame.camera = sv::ortho_nadir_camera(field, a.exaggeration);
       frame.draw_bodies = false;
@@ -246,6 +250,9 @@ void add_render_command(CLI::App& root, Action& run) {
   cmd->add_option("--trail", args->trail, "The tracks' trails up to each frame's time: altitude | climb | off")
       ->capture_default_str();
   cmd->add_option("--exaggeration", args->exaggeration, "Vertical exaggeration of the drawn terrain")->capture_default_str();
+  cmd->add_option("--mesh-error", args->mesh_error_px,
+                  "The terrain mesh's error on screen in pixels (0.5 to 16): more is faster, coarser at ridges")
+      ->capture_default_str();
   cmd->add_flag("--overwrite", args->overwrite, "Replace an existing output");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or notes");
   cmd->add_flag("--timings", args->timings, "Finish each pass before the next and print the mean time per pass");

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   app.add_option("--track-altitude", o.altitude, "gnss | pressure | agl-offset=M")->capture_default_str();
   app.add_option("--quality", o.quality, "fast | default | high")->capture_default_str();
   app.add_option("--exaggeration", o.exaggeration, "Vertical exaggeration")->capture_default_str();
+  app.add_option("--mesh-error", o.mesh_error_px,
+                 "The terrain mesh's error on screen in pixels (0.5 to 16; the panel's \"mesh error\"): more is faster")
+      ->capture_default_str();
   app.add_option("--refresh-frames", o.refresh_frames,
                  "After a brush edit: shade the edited area at once and the rest of the field over this many frames (0: at once)")
       ->capture_default_str();

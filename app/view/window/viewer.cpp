@@ -23,6 +23,7 @@
 #include "app/common/synthetic_scene.h"
 #include "app/shade/tracked_aircraft.h"
 #include "app/view/aircraft_trails.h"
+#include "app/view/mesh_error.h"
 #include "app/view/camera_aim.h"
 #include "app/view/window/glfw_window.h"
 #include "app/view/window/key_bindings.h"
@@ -92,6 +93,7 @@ sv::CameraInput camera_input(const InputState& input) {
 // fails in one line before either is opened.
 const ViewerOptions& checked(const ViewerOptions& o) {
   if (!(o.exaggeration > 0.0) || o.exaggeration > 100.0) throw std::invalid_argument("--exaggeration must be in (0, 100]");
+  check_mesh_error(o.mesh_error_px);
   if (!(o.fps > 0.0)) throw std::invalid_argument("--fps must be > 0");
   if (o.frames > 0 && o.screenshot.empty()) throw std::invalid_argument("--frames needs --screenshot FILE");
   if (!o.screenshot.empty()) check_screenshot_path(o.screenshot, o.overwrite);
@@ -204,6 +206,7 @@ Viewer::Viewer(const ViewerOptions& o)
   panel_.camera = static_cast<int>(*mode);
   panel_.quality = quality_ = static_cast<int>(*q);
   panel_.exaggeration = static_cast<float>(o.exaggeration);
+  panel_.mesh_error_px = static_cast<float>(o.mesh_error_px);
   panel_.turbidity = static_cast<float>(o.light.request.turbidity);
   panel_.sky = std::max(0, index_of(kSkyChoices, o.light.request.sky));
   panel_.screenshot_scale = o.screenshot_scale;
@@ -379,6 +382,7 @@ sv::ViewFrame Viewer::make_frame() {
   if (aircraft_) frame.shading.spheres = aircraft_->spheres_at(t);
   frame.style.tone = options_.shaded.tone;
   frame.style.exaggeration = exaggeration_;
+  frame.style.max_error_px = panel_.mesh_error_px;
   rig_.set_target(aim_.at(aircraft_, followed_, t, exaggeration_));
   return frame;
 }

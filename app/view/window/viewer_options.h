@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/common/lighting_args.h"
+#include "view/terrain_lod.h"
 
 namespace skylit::app::view::window {
 
@@ -19,6 +20,7 @@ struct ViewerOptions {
   LightingArgs light;  // --time: the clock's start (with a track: a time in it)
   std::string quality = "default";
   double exaggeration = 1.0;
+  double mesh_error_px = skylit::view::kDefaultMeshErrorPx;
   // After a brush edit: the edited area is shaded at once and the rest of the field over
   // this many frames (0: all of it in the edit's frame).
   int refresh_frames = 32;

@@ -6,6 +6,7 @@
 
 #include "app/view/window/key_bindings.h"
 #include "shading/sky/time_utc.h"
+#include "view/terrain_lod.h"
 
 namespace skylit::app::view::window {
 namespace {
@@ -59,6 +60,7 @@ void draw_panel(PanelState& s, skylit::view::Timeline& timeline, const PanelInfo
     ImGui::SliderFloat("turbidity", &s.turbidity, 2.0f, 10.0f, "%.1f");
     combo("quality", s.quality, kQualityChoices);
     ImGui::SliderFloat("exaggeration", &s.exaggeration, 0.5f, 5.0f, "%.2f");
+    ImGui::SliderFloat("mesh error (px)", &s.mesh_error_px, static_cast<float>(skylit::view::kMinMeshErrorPx), 8.0f, "%.1f");
     combo("camera", s.camera, kCameraChoices);
     combo("trail", s.trail, kTrailChoices);
     ImGui::Separator();

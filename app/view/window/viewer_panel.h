@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "view/scene_view.h"
+#include "view/terrain_lod.h"
 #include "view/timeline.h"
 
 namespace skylit::app::view::window {
@@ -23,6 +24,7 @@ struct PanelState {
   float turbidity = 3.0f;
   int quality = 1;  // kQualityChoices
   float exaggeration = 1.0f;
+  float mesh_error_px = static_cast<float>(skylit::view::kDefaultMeshErrorPx);
   int camera = 0;  // kCameraChoices
   int brush = 0;   // kBrushChoices
   int trail = 1;   // kTrailChoices

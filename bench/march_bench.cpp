@@ -36,7 +36,6 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -236,14 +235,14 @@ BENCHMARK(BM_SweepFarSlopes)
     ->Unit(benchmark::kMillisecond);
 
 // The sun's sweep (K 8, 3 lines, shading::sun_march_options) with the floor of a sun
-// at `elevation` degrees (shading::sun_sweep_floor; 0: no floor), one thread, 1024²:
+// at `elevation` degrees (shading::sun_sweep_floor: none below 30°), one thread, 1024²:
 // what the floor saves by the sun's height.
 void BM_SunSweepFloor(benchmark::State& state) {
   const tr::HeightField& field = scene(1024);
   const shading::SunShadowOptions sun;
   const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(1, 12));
   const double elevation = static_cast<double>(state.range(0)) * std::numbers::pi / 180.0;
-  const double floor = elevation > 0.0 ? shading::sun_sweep_floor(elevation, sun) : -std::numeric_limits<double>::infinity();
+  const double floor = shading::sun_sweep_floor(elevation, sun);
   for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, sun.march, 1, floor).data());
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
 }

@@ -133,10 +133,11 @@ double sweep_window_steps(const terrain::HeightField& field, const SweepGeometry
 // std::invalid_argument unless applicable.
 // `floor_slope` > 0 (tan; the sun's: only slopes near its disc matter): a texel whose far
 // slope is below it gets a lower code or kFarCodeNone (a max over fewer samples); every
-// other texel gets its code as without the floor. On straight lines (one row spacing) the sweep first bounds each
-// observer's samples by the 3 × 3 maxima of the heights beside them (an O(1) running
-// maximum per sample), then runs the hull for the observers it could not settle and the
-// samples within reach of their floor lines alone; elsewhere the floor changes nothing.
+// other texel gets its code as without the floor. On straight lines (one row spacing)
+// the sweep first bounds each observer's samples by the 3 × 3 maxima of the heights
+// beside them (an O(1) running maximum per sample), then runs the hull for the observers
+// it could not settle and the samples within reach of their floor lines alone; elsewhere
+// the floor changes nothing.
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options,
                                             unsigned threads = 1,
                                             double floor_slope = -std::numeric_limits<double>::infinity());

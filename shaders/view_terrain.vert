@@ -1,8 +1,9 @@
 #version 450
 // The terrain mesh: one patch of PATCH x PATCH quads per level-of-detail node
-// (view/terrain_lod.h; one instance each), with a skirt ring hung below its edges so that joins between
-// nodes of different strides show no cracks. Vertices read the heights from a texture
-// (no vertex buffer): gl_VertexID = b * (PATCH + 3) + a over the patch with its ring.
+// (view/terrain_lod.h; one instance each), and skirts hung below the sides where nodes
+// of different strides meet, so that their joins show no cracks (drawn per side, the
+// nodes' records from first_node on). Vertices read the heights from a texture (no
+// vertex buffer): gl_VertexID = b * (PATCH + 3) + a over the patch with its ring.
 // Needs PATCH (view/terrain_draw.cpp).
 #include "curvature_drop.glsl"
 
@@ -14,14 +15,15 @@ struct Node {
   int stride;     // texels between vertices
   float skirt_m;  // how far the ring hangs below the edge
 };
-layout(std430, binding = 0) readonly buffer Nodes { Node nodes[]; };  // one per instance
+layout(std430, binding = 0) readonly buffer Nodes { Node nodes[]; };
+uniform int first_node;  // the record of instance 0
 uniform float exaggeration;
 uniform mat4 view_proj;
 
 out vec2 texel;  // field texel coordinates (i, j), interpolated for the product lookup
 
 void main() {
-  Node node = nodes[gl_InstanceID];
+  Node node = nodes[first_node + gl_InstanceID];
   int a = gl_VertexID % (PATCH + 3), b = gl_VertexID / (PATCH + 3);
   bool ring = a == 0 || b == 0 || a == PATCH + 2 || b == PATCH + 2;
   ivec2 local = clamp(ivec2(a, b) - 1, 0, PATCH);

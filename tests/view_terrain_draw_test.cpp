@@ -1,5 +1,5 @@
 // The terrain mesh seen obliquely from above: patches of several strides meet without
-// cracks, and culling back faces removes no ground. Every pixel's ray meets the ground
+// cracks, though only their joins hang skirts, and culling back faces removes no ground. Every pixel's ray meets the ground
 // inside the field, so no pixel may keep the clear colour. llvmpipe where there is no GPU.
 #include "gpu_test_util.h"
 
@@ -26,9 +26,10 @@ namespace {
 using TerrainDrawTest = gpu::testing::GpuTest;
 
 // The terrain of `f`, coloured by its `shaded` frame, seen by `camera` in a size² frame
-// cleared to magenta: RGB, top row first.
+// cleared to magenta: RGB, top row first. `patches`, `skirts`: what the draw drew.
 std::vector<std::uint8_t> draw_terrain(const terrain::HeightField& f, const ViewCamera& camera, int size,
-                                       const TerrainStyle& style) {
+                                       const TerrainStyle& style, std::size_t* patches = nullptr,
+                                       std::size_t* skirts = nullptr) {
   gpu::GpuRenderer renderer;
   renderer.set_field(f);
   shading::ProductOptions o;
@@ -44,6 +45,8 @@ std::vector<std::uint8_t> draw_terrain(const terrain::HeightField& f, const View
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
+  if (patches) *patches = terrain.last_node_count();
+  if (skirts) *skirts = terrain.last_skirt_count();
   return target.read_rgb();
 }
 
@@ -92,10 +95,31 @@ TEST_F(TerrainDrawTest, ObliqueGroundHasNoCracksBetweenLevels) {
   for (const LodNode& n : TerrainLod(f).select(lod_view)) strides.insert(n.stride);
   ASSERT_GE(strides.size(), 3u) << "patches of several strides meet in this view";
 
-  const std::vector<std::uint8_t> rgb = draw_terrain(f, camera, size, style);
+  std::size_t patches = 0, skirts = 0;
+  const std::vector<std::uint8_t> rgb = draw_terrain(f, camera, size, style, &patches, &skirts);
   int empty = 0;
   for (std::size_t p = 0; p < rgb.size(); p += 3) empty += magenta(rgb, p);
   EXPECT_EQ(empty, 0) << "pixels where the ground has a crack or a culled face";
+  // Skirts hang only on the sides where strides change: some, not every side's.
+  EXPECT_GT(skirts, 0u);
+  EXPECT_LT(skirts, 4 * patches) << patches << " patches";
+}
+
+// Straight down, every patch has stride 1 (TerrainLod): no join between strides, so no
+// skirt, and every pixel is ground.
+TEST_F(TerrainDrawTest, PatchesOfOneStrideHangNoSkirt) {
+  gpu::testing::SyntheticFieldSpec spec;
+  spec.width = spec.height = 200;
+  terrain::HeightField f = gpu::testing::synthetic_field(spec);
+  f.valid[static_cast<std::size_t>(spec.nodata_j) * f.width + spec.nodata_i] = 1;
+  TerrainStyle style;
+  std::size_t patches = 0, skirts = 1;
+  const std::vector<std::uint8_t> rgb = draw_terrain(f, ortho_nadir_camera(f, 1.0), f.width, style, &patches, &skirts);
+  EXPECT_EQ(patches, 13u * 13u);  // ⌈199 / 16⌉²
+  EXPECT_EQ(skirts, 0u);
+  int empty = 0;
+  for (std::size_t p = 0; p < rgb.size(); p += 3) empty += magenta(rgb, p);
+  EXPECT_EQ(empty, 0);
 }
 
 // Seen from outside, the ground ends at its edge: no skirt hangs below it (a skirt only

@@ -19,21 +19,33 @@ gpu::GlslDefines terrain_defines(const terrain::HeightField& field) {
   return d;
 }
 
+// The skirt ring's sides, in the order of patch_indices()'s strips.
+enum Side { kNorth, kSouth, kWest, kEast, kSides };
+
 // Two triangles per quad of the (PATCH + 2)² grid of the patch with its skirt ring,
 // counter-clockwise seen from above (a runs east, b south): the ground faces up and
 // each skirt faces out of its patch, so culling back faces keeps every skirt that
 // hides a crack (the one hung from the higher edge faces the viewer on the lower side).
+// First the PATCH² quads of ground, then one strip of PATCH quads per side (Side's
+// order), each hung below that side's edge. The ring's corner quads are left out: all
+// their ring vertices sit below the patch's corner, so both their triangles are empty.
 std::vector<std::uint32_t> patch_indices() {
   const int n = kPatchQuads + 3;  // vertices per side
   std::vector<std::uint32_t> out;
-  out.reserve(static_cast<std::size_t>(n - 1) * (n - 1) * 6);
-  for (int b = 0; b + 1 < n; ++b)
-    for (int a = 0; a + 1 < n; ++a) {
-      const std::uint32_t v = static_cast<std::uint32_t>(b * n + a);
-      out.insert(out.end(), {v, v + n, v + 1, v + 1, v + n, v + n + 1});
-    }
+  out.reserve(static_cast<std::size_t>(kPatchQuads) * (kPatchQuads + 4) * 6);
+  auto quad = [&](int a, int b) {
+    const std::uint32_t v = static_cast<std::uint32_t>(b * n + a);
+    out.insert(out.end(), {v, v + n, v + 1, v + 1, v + n, v + n + 1});
+  };
+  for (int b = 1; b <= kPatchQuads; ++b)
+    for (int a = 1; a <= kPatchQuads; ++a) quad(a, b);
+  for (int a = 1; a <= kPatchQuads; ++a) quad(a, 0);               // north
+  for (int a = 1; a <= kPatchQuads; ++a) quad(a, kPatchQuads + 1);  // south
+  for (int b = 1; b <= kPatchQuads; ++b) quad(0, b);               // west
+  for (int b = 1; b <= kPatchQuads; ++b) quad(kPatchQuads + 1, b);  // east
   return out;
 }
+constexpr int kGroundIndices = kPatchQuads * kPatchQuads * 6, kSideIndices = kPatchQuads * 6;
 
 // One node as view_terrain.vert reads it (std430).
 struct NodeRecord {
@@ -58,7 +70,6 @@ TerrainDraw::TerrainDraw(const terrain::HeightField& field)
   revision_ = field.revision;
   field_id_ = field.id.value();
   const std::vector<std::uint32_t> idx = patch_indices();
-  index_count_ = static_cast<int>(idx.size());
   glCreateVertexArrays(1, &vao_);
   glCreateBuffers(1, &indices_);
   glNamedBufferStorage(indices_, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(), 0);
@@ -136,13 +147,39 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   };
   std::sort(nodes.begin(), nodes.end(), [&](const LodNode& a, const LodNode& b) { return distance2(a) < distance2(b); });
 
+  // A side needs its skirt only where the patch meets one of another stride: next to
+  // one of its own stride (aligned in the quadtree) the edges' vertices are the same.
+  // Beyond the field's edge none hangs (view_terrain.vert).
+  const int cells_x = (width_ - 1 + kPatchQuads - 1) / kPatchQuads, cells_y = (height_ - 1 + kPatchQuads - 1) / kPatchQuads;
+  std::vector<int> cell_stride(static_cast<std::size_t>(std::max(cells_x, 1)) * std::max(cells_y, 1), 0);
+  for (const LodNode& n : nodes)
+    for (int r = n.j0 / kPatchQuads; r < std::min(cells_y, n.j0 / kPatchQuads + n.stride); ++r)
+      for (int c = n.i0 / kPatchQuads; c < std::min(cells_x, n.i0 / kPatchQuads + n.stride); ++c)
+        cell_stride[static_cast<std::size_t>(r) * cells_x + c] = n.stride;
+  auto needs_skirt = [&](const LodNode& n, Side side) {
+    const int c0 = n.i0 / kPatchQuads, r0 = n.j0 / kPatchQuads;
+    const int c = side == kWest ? c0 - 1 : side == kEast ? c0 + n.stride : c0;
+    const int r = side == kNorth ? r0 - 1 : side == kSouth ? r0 + n.stride : r0;
+    if (c < 0 || r < 0 || c >= cells_x || r >= cells_y) return false;
+    return cell_stride[static_cast<std::size_t>(r) * cells_x + c] != n.stride;
+  };
+
+  // The records: every node's, then each side's nodes that hang a skirt there.
   std::vector<NodeRecord> records;
-  records.reserve(nodes.size());
+  records.reserve(2 * nodes.size());
   for (const LodNode& n : nodes)
     // Deep enough to hide the step to a neighbour of another stride on steep ground.
     records.push_back({n.i0, n.j0, n.stride,
                        static_cast<float>(std::max(5.0, 2.0 * n.stride * std::max(dx_, dy_)) * style.exaggeration)});
-  if (records.empty()) return;
+  std::size_t side_first[kSides], side_count[kSides];
+  for (int side = 0; side < kSides; ++side) {
+    side_first[side] = records.size();
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (needs_skirt(nodes[k], static_cast<Side>(side))) records.push_back(records[k]);
+    side_count[side] = records.size() - side_first[side];
+  }
+  skirts_ = records.size() - nodes.size();
+  if (nodes.empty()) return;
   const std::size_t bytes = records.size() * sizeof(NodeRecord);
   if (node_buffer_.size_bytes() < bytes) node_buffer_ = gpu::Buffer(bytes);
   node_buffer_.upload(records.data(), bytes);
@@ -158,13 +195,24 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);
   node_buffer_.bind_storage(0);
-  // One draw for all nodes (llvmpipe pays per draw call); instances are drawn in order.
+  // One draw for all the ground and one per side's skirts (llvmpipe pays per draw call,
+  // and per triangle: the skirts were a fifth of them); instances are drawn in order.
   // Back faces (slopes facing away, skirts seen from inside their patch) are hidden from
   // any eye above the terrain; culling them spares llvmpipe their binning.
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glBindVertexArray(vao_);
-  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(records.size()));
+  auto draw_range = [&](std::size_t first_index, int count, std::size_t first_node, std::size_t instances) {
+    if (instances == 0) return;
+    program_.set("first_node", static_cast<int>(first_node));
+    glDrawElementsInstanced(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+                            reinterpret_cast<const void*>(first_index * sizeof(std::uint32_t)),
+                            static_cast<GLsizei>(instances));
+  };
+  draw_range(0, kGroundIndices, 0, nodes.size());
+  for (int side = 0; side < kSides; ++side)
+    draw_range(kGroundIndices + static_cast<std::size_t>(side) * kSideIndices, kSideIndices, side_first[side],
+               side_count[side]);
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
   gpu::throw_on_gl_error("TerrainDraw::draw");

@@ -44,6 +44,8 @@ class TerrainDraw {
   // pixels_per_radian 0: orthographic (every node at full resolution). Needs set_colour().
   void draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian, const TerrainStyle& style);
   std::size_t last_node_count() const { return nodes_; }
+  // The skirts it hung (a patch's side each): only where patches of different strides meet.
+  std::size_t last_skirt_count() const { return skirts_; }
 
  private:
 
@@ -54,11 +56,10 @@ class TerrainDraw {
   gpu::GraphicsProgram program_;
   gpu::Buffer node_buffer_;  // NodeRecord per drawn node
   std::uint32_t vao_ = 0, indices_ = 0;
-  int index_count_ = 0;
   int width_, height_;
   double dx_, dy_;
   std::uint64_t revision_ = 0, field_id_ = 0;
-  std::size_t nodes_ = 0;
+  std::size_t nodes_ = 0, skirts_ = 0;
   double colour_scale_ = -1.0;  // what the colour map holds: the frame's display scale, bands, serial
   int colour_bands_ = 0;
   std::uint64_t colour_serial_ = 0;

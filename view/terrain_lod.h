@@ -2,12 +2,14 @@
 // field whose node at level l covers kPatchQuads · 2^l texels with one vertex every 2^l
 // texels, drawn as two triangles per quad (view/terrain_draw.cpp's diagonal). Each node
 // knows its geometric error: the largest vertical distance between its triangles and
-// the field's heights inside it, and no less than its children's. A node is split while
-// that error (exaggerated, plus what the triangles miss of the curvature drop), seen
-// from the eye, exceeds the allowed pixels; nodes outside the view frustum are dropped
-// by their height bounds. Smooth ground thus gets coarse triangles near the eye and
-// rough ground fine ones far away; the light does not depend on it (texture-space
-// shading). Neighbours of different levels meet with a skirt (view_terrain.vert).
+// the field's heights inside it, and no less than its children's; and that of its
+// triangles alone in each level-0 node's block of texels. A node is split while one
+// block's error (exaggerated, plus what the triangles miss of the curvature drop), seen
+// from the eye at the block's distance, exceeds the allowed pixels; nodes outside the
+// view frustum are dropped by their height bounds. Smooth ground thus gets coarse
+// triangles near the eye and rough ground fine ones far away; the light does not depend
+// on it (texture-space shading). Neighbours of different levels meet with a skirt
+// (view_terrain.vert).
 #pragma once
 
 #include <glm/mat4x4.hpp>

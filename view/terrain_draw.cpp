@@ -150,8 +150,10 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   // A side needs its skirt only where the patch meets one of another stride: next to
   // one of its own stride (aligned in the quadtree) the edges' vertices are the same.
   // Beyond the field's edge none hangs (view_terrain.vert).
-  const int cells_x = (width_ - 1 + kPatchQuads - 1) / kPatchQuads, cells_y = (height_ - 1 + kPatchQuads - 1) / kPatchQuads;
-  std::vector<int> cell_stride(static_cast<std::size_t>(std::max(cells_x, 1)) * std::max(cells_y, 1), 0);
+  // Per level-0 node (TerrainLod's): the stride of the selected node over it, 0 if none.
+  const int cells_x = std::max(1, (width_ - 1 + kPatchQuads - 1) / kPatchQuads);
+  const int cells_y = std::max(1, (height_ - 1 + kPatchQuads - 1) / kPatchQuads);
+  std::vector<int> cell_stride(static_cast<std::size_t>(cells_x) * cells_y, 0);
   for (const LodNode& n : nodes)
     for (int r = n.j0 / kPatchQuads; r < std::min(cells_y, n.j0 / kPatchQuads + n.stride); ++r)
       for (int c = n.i0 / kPatchQuads; c < std::min(cells_x, n.i0 / kPatchQuads + n.stride); ++c)
@@ -195,8 +197,8 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);
   node_buffer_.bind_storage(0);
-  // One draw for all the ground and one per side's skirts (llvmpipe pays per draw call,
-  // and per triangle: the skirts were a fifth of them); instances are drawn in order.
+  // One draw for all the ground and one per side's skirts (llvmpipe pays per draw call
+  // and per triangle); instances are drawn in order.
   // Back faces (slopes facing away, skirts seen from inside their patch) are hidden from
   // any eye above the terrain; culling them spares llvmpipe their binning.
   glEnable(GL_CULL_FACE);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs every system dependency of skylit from Debian 12 packages.
 # Idempotent: packages already present are skipped; uses sudo when not root.
-# --upgrade also brings the installed ones up to the current Debian 12 update, as a
-# fresh install would get them (.ci/run: CI tests what users install, not the image's
-# older packages).
+# --upgrade also brings the installed ones, and the installed packages they depend on,
+# up to the current Debian 12 update, as a fresh install would get them (.ci/run: CI
+# tests what users install, not the image's older packages; GDAL's libpng, Mesa's LLVM).
 # Usage: scripts/setup.sh [--upgrade]
 set -euo pipefail
 
@@ -56,8 +56,20 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+# The installed packages the listed ones depend on, directly or not, that have an update.
+upgradable_dependencies() {
+  comm -12 \
+    <(apt-cache depends --recurse --installed --no-recommends --no-suggests --no-conflicts --no-breaks \
+        --no-replaces --no-enhances "${PACKAGES[@]}" 2>/dev/null | grep -v '^ ' | grep -v '^<' | sed 's/:.*//' | sort -u) \
+    <(apt list --upgradable 2>/dev/null | grep / | cut -d/ -f1 | sort -u)
+}
 if $upgrade; then
   $SUDO apt-get install -y -qq --only-upgrade "${PACKAGES[@]}" >/dev/null
+  mapfile -t dependencies < <(upgradable_dependencies)
+  if [ ${#dependencies[@]} -gt 0 ]; then
+    echo "setup: upgrading ${#dependencies[@]} installed dependencies: ${dependencies[*]}"
+    $SUDO apt-get install -y -qq --only-upgrade "${dependencies[@]}" >/dev/null
+  fi
   changed=$(join <(sort <<<"$before") <(installed | sort) | awk '$2 != $3 { print $1, $2, "->", $3 }')
   if [ -n "$changed" ]; then
     echo "setup: upgraded:"

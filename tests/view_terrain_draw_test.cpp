@@ -1,6 +1,7 @@
 // The terrain mesh seen obliquely from above: patches of several strides meet without
-// cracks, though only their joins hang skirts, and culling back faces removes no ground. Every pixel's ray meets the ground
-// inside the field, so no pixel may keep the clear colour. llvmpipe where there is no GPU.
+// cracks, though only their joins hang skirts, and culling back faces removes no
+// ground. Every pixel's ray meets the ground inside the field, so no pixel may keep the
+// clear colour. llvmpipe where there is no GPU.
 #include "gpu_test_util.h"
 
 #include <epoxy/gl.h>

@@ -151,8 +151,8 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   // one of its own stride (aligned in the quadtree) the edges' vertices are the same.
   // Beyond the field's edge none hangs (view_terrain.vert).
   // Per level-0 node (TerrainLod's): the stride of the selected node over it, 0 if none.
-  const int cells_x = std::max(1, (width_ - 1 + kPatchQuads - 1) / kPatchQuads);
-  const int cells_y = std::max(1, (height_ - 1 + kPatchQuads - 1) / kPatchQuads);
+  const glm::ivec2 cells = lod_.node_counts(0);
+  const int cells_x = cells.x, cells_y = cells.y;
   std::vector<int> cell_stride(static_cast<std::size_t>(cells_x) * cells_y, 0);
   for (const LodNode& n : nodes)
     for (int r = n.j0 / kPatchQuads; r < std::min(cells_y, n.j0 / kPatchQuads + n.stride); ++r)

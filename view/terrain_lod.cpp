@@ -159,18 +159,19 @@ void TerrainLod::visit(int level, int ni, int nj, const LodView& view, std::vect
     // seen from the block's own nearest point: the far blocks of a node near the eye
     // need not be as fine as its nearest. Split as soon as one block shows too much.
     const Level& blocks = bounds_[0];
-    split = false;
-    for (int bj = nj * stride; !split && bj < std::min((nj + 1) * stride, blocks.nodes_y); ++bj)
-      for (int bi = ni * stride; bi < std::min((ni + 1) * stride, blocks.nodes_x); ++bi) {
-        const double error = l.block_error[static_cast<std::size_t>(bj) * blocks.nodes_x + bi] * view.exaggeration + curve;
-        const glm::dvec3 block_lo(bi * kPatchQuads * dx_, -std::min(height_ - 1, (bj + 1) * kPatchQuads) * dy_, lo.z);
-        const glm::dvec3 block_hi(std::min(width_ - 1, (bi + 1) * kPatchQuads) * dx_, -bj * kPatchQuads * dy_, hi.z);
-        const double distance = std::max(glm::length(view.eye - glm::clamp(view.eye, block_lo, block_hi)), 1e-3);
-        if (error / distance * view.pixels_per_radian > view.max_error_px) {
-          split = true;
-          break;
+    auto shows_too_much = [&] {
+      for (int bj = nj * stride; bj < std::min((nj + 1) * stride, blocks.nodes_y); ++bj)
+        for (int bi = ni * stride; bi < std::min((ni + 1) * stride, blocks.nodes_x); ++bi) {
+          const double error =
+              l.block_error[static_cast<std::size_t>(bj) * blocks.nodes_x + bi] * view.exaggeration + curve;
+          const glm::dvec3 block_lo(bi * kPatchQuads * dx_, -std::min(height_ - 1, (bj + 1) * kPatchQuads) * dy_, lo.z);
+          const glm::dvec3 block_hi(std::min(width_ - 1, (bi + 1) * kPatchQuads) * dx_, -bj * kPatchQuads * dy_, hi.z);
+          const double distance = std::max(glm::length(view.eye - glm::clamp(view.eye, block_lo, block_hi)), 1e-3);
+          if (error / distance * view.pixels_per_radian > view.max_error_px) return true;
         }
-      }
+      return false;
+    };
+    split = shows_too_much();
   }
   if (!split) {
     out.push_back({i0, j0, stride});

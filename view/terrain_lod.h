@@ -13,6 +13,7 @@
 #pragma once
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <vector>
@@ -53,6 +54,11 @@ class TerrainLod {
   std::vector<LodNode> select(const LodView& view) const;
 
   int levels() const { return static_cast<int>(bounds_.size()); }
+  // Nodes across and down at `level` (level 0: the blocks of kPatchQuads texels).
+  glm::ivec2 node_counts(int level) const {
+    const Level& l = bounds_.at(static_cast<std::size_t>(level));
+    return {l.nodes_x, l.nodes_y};
+  }
   // Height range (min, max) of the node at `level` and node index (ni, nj).
   glm::dvec2 bounds(int level, int ni, int nj) const;
   // Its geometric error (m, unexaggerated; 0 at level 0).

@@ -921,9 +921,10 @@ void GpuProductPipeline::Impl::upload_sky_tables(const std::vector<float>& sky, 
   }
 }
 
-void GpuProductPipeline::set_exposure(double exposure) {
+void GpuProductPipeline::set_tone_map(double exposure, shading::ToneCurve tone) {
   if (!(exposure > 0.0)) throw std::invalid_argument("shaded: exposure must be > 0");
   mOptions.shaded.exposure = exposure;
+  mOptions.shaded.tone = tone;
   if (shading::uses_lighting(mProduct, mOptions))
     mImpl->display_per_irradiance = shading::shaded_display_scale(mOptions.shaded, *mOptions.lighting);
 }

@@ -85,9 +85,11 @@ class GpuProductPipeline {
 
   // Per-frame inputs: the sun and sky (uniforms and the sky tables; the lighting must
   // match the constructor's in what same_baked_lighting compares, else std::logic_error),
-  // and the exposure of `shaded`.
+  // and the tone map of `shaded`.
   void set_lighting(const shading::Lighting& lighting);
-  void set_exposure(double exposure);
+  // `shaded`'s exposure and tone curve (neither baked in: the codes and the tone map's
+  // display scale are made on the host).
+  void set_tone_map(double exposure, shading::ToneCurve tone);
   // The texels whose horizons are wanted (MarchOptions::region; not baked in).
   void set_region(const terrain::PixelRect& region);
   // `shaded` and `irradiance`: keep the visibility (SH_COEFFS floats per texel) of a

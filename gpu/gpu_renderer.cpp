@@ -118,7 +118,7 @@ GpuProductPipeline& GpuRenderer::prepare(Product product, const shading::Product
   last_ = &pipeline;
   if (blocked) pipeline.set_spheres(inputs.spheres);
   if (shading::uses_lighting(product, options)) pipeline.set_lighting(*options.lighting);
-  pipeline.set_exposure(options.shaded.exposure);
+  pipeline.set_tone_map(options.shaded.exposure, options.shaded.tone);
   pipeline.set_region(options.march.region);
   pipeline.keep_visibility(keep_);
   pipeline.set_refresh_budget(refresh_budget_);

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpu/gpu_pipeline.h"
@@ -173,6 +174,25 @@ TEST_F(GpuRendererTest, ALightingOfAnotherShapeGetsItsOwnKernels) {
     const ProductBands got = r.frame(Product::Shaded, {l, {}, std::nullopt});
     EXPECT_EQ(got.bands, l.colour ? 3 : 1);
     EXPECT_TRUE(bit_identical(got, fresh(r, f, Product::Shaded, o, l)));
+  }
+}
+
+TEST_F(GpuRendererTest, AnotherToneOrExposureOnTheSamePipelineCodesWithIt) {
+  // Neither is baked into the kernels, so the cached pipeline serves them: each frame must
+  // still code with its own, as a pipeline built for it does.
+  const terrain::HeightField f = testing::synthetic_field();
+  const Lighting l = sun_at(120, 35, "preetham");
+  ProductOptions o = small_options();
+  const auto renderer = renderer_on(f, o, 3);
+  GpuRenderer& r = *renderer;
+  for (const auto& [tone, exposure] : {std::pair{shading::ToneCurve::Srgb, 1.0}, {shading::ToneCurve::Linear, 1.0},
+                                       {shading::ToneCurve::Linear, 0.5}}) {
+    o.shaded.tone = tone;
+    o.shaded.exposure = exposure;
+    r.set_options(o);
+    const ProductBands got = r.frame(Product::Shaded, {l, {}, std::nullopt});
+    EXPECT_TRUE(bit_identical(got, fresh(r, f, Product::Shaded, o, l)))
+        << (tone == shading::ToneCurve::Srgb ? "srgb" : "linear") << ", exposure " << exposure;
   }
 }
 

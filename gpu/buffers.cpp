@@ -18,7 +18,13 @@ void check_range(std::size_t offset, std::size_t bytes, std::size_t size, const 
 }
 
 GLenum internal_format(TextureFormat f) {
-  return f == TextureFormat::R32F ? GL_R32F : f == TextureFormat::RG32F ? GL_RG32F : GL_RGBA32F;
+  switch (f) {
+    case TextureFormat::R32F: return GL_R32F;
+    case TextureFormat::RG32F: return GL_RG32F;
+    case TextureFormat::RGBA32F: return GL_RGBA32F;
+    case TextureFormat::RGBA8: return GL_RGBA8;
+  }
+  return GL_RGBA32F;
 }
 GLenum pixel_format(TextureFormat f) {
   return f == TextureFormat::R32F ? GL_RED : f == TextureFormat::RG32F ? GL_RG : GL_RGBA;

@@ -1,17 +1,19 @@
 #version 450
 // The terrain's colour map: the renderer's `shaded` frame (band-major float32, NaN on
-// nodata, 1 band grey or 3 bands R, G, B; gpu::GpuFrame) as linear display values (before
-// the tone curve), one RGBA32F texel per field texel, which the terrain's fragments filter
-// bilinearly in one texture lookup (view/terrain_draw.h). Alpha 0 marks nodata; such a
-// texel takes a valid neighbour's value, so that the lookup next to the surface's edge
-// blends in nothing from beyond it.
+// nodata, 1 band grey or 3 bands R, G, B; gpu::GpuFrame) as the export's 8-bit display
+// codes (tone curve applied), one RGBA8 texel per field texel, which the terrain's
+// fragments filter bilinearly in one texture lookup (view/terrain_draw.h). Alpha 0 marks
+// nodata; such a texel takes a valid neighbour's value, so that the lookup next to the
+// surface's edge blends in nothing from beyond it. Needs display_code.glsl's defines.
+#include "display_code.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 0) readonly buffer Bands { float bands[]; };
-layout(rgba32f, binding = 0) writeonly uniform image2D colour_map;
+layout(rgba8, binding = 0) writeonly uniform image2D colour_map;
 uniform ivec2 field_size;
 uniform int band_count;
 uniform float display_scale;  // linear value -> display value
+uniform int srgb;             // tone curve: 1 sRGB, 0 linear
 uniform ivec2 origin;         // the first texel of the rectangle dispatched
 uniform ivec2 extent;         // its size
 
@@ -45,5 +47,7 @@ void main() {
       }
     }
   }
-  imageStore(colour_map, ij, vec4(v * display_scale, alpha));
+  vec3 code;
+  for (int c = 0; c < 3; ++c) code[c] = displayCode(v[c] * display_scale, srgb != 0);
+  imageStore(colour_map, ij, vec4(code / 255.0, alpha));
 }

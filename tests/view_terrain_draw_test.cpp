@@ -38,7 +38,7 @@ std::vector<std::uint8_t> draw_terrain(const terrain::HeightField& f, const View
   renderer.set_options(o);
   const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
   TerrainDraw terrain(f);
-  terrain.set_colour(shaded);
+  terrain.set_colour(shaded, style.tone);
   OffscreenTarget target(size, size);
   target.bind();
   glEnable(GL_DEPTH_TEST);
@@ -121,6 +121,35 @@ TEST_F(TerrainDrawTest, PatchesOfOneStrideHangNoSkirt) {
   int empty = 0;
   for (std::size_t p = 0; p < rgb.size(); p += 3) empty += magenta(rgb, p);
   EXPECT_EQ(empty, 0);
+}
+
+// The colour map holds display codes, so the tone curve is baked into it: the same
+// frame under another tone must recolour all of it, as a fresh draw under that tone.
+TEST_F(TerrainDrawTest, AnotherToneRecoloursTheSameFrame) {
+  const terrain::HeightField f = gpu::testing::synthetic_field();
+  gpu::GpuRenderer renderer;
+  renderer.set_field(f);
+  shading::ProductOptions o;
+  o.march.azimuths = 8;
+  renderer.set_options(o);
+  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+  const ViewCamera camera = ortho_nadir_camera(f, 1.0);
+  OffscreenTarget target(f.width, f.height);
+  target.bind();
+  auto draw = [&](TerrainDraw& terrain, shading::ToneCurve tone) {
+    terrain.set_colour(shaded, tone);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    TerrainStyle style;
+    style.tone = tone;
+    terrain.draw(camera.proj * camera.view, camera.eye, camera.pixels_per_radian, style);
+    return target.read_rgb();
+  };
+  glEnable(GL_DEPTH_TEST);
+  TerrainDraw terrain(f), fresh(f);
+  const std::vector<std::uint8_t> srgb = draw(terrain, shading::ToneCurve::Srgb);
+  const std::vector<std::uint8_t> linear = draw(terrain, shading::ToneCurve::Linear);
+  EXPECT_NE(linear, srgb);
+  EXPECT_EQ(linear, draw(fresh, shading::ToneCurve::Linear));
 }
 
 // Seen from outside, the ground ends at its edge: no skirt hangs below it (a skirt only

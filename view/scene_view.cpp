@@ -160,8 +160,8 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   if (!frame.reuse_shading || !shaded_) {
     shaded_.reset();
     shaded_.emplace(renderer_.frame_on_gpu(shading::Product::Shaded, frame.shading));
-    terrain_.set_colour(*shaded_);
   }
+  terrain_.set_colour(*shaded_, frame.style.tone);
   const gpu::GpuFrame& shaded = *shaded_;
   t.horizons_reused = frame.reuse_shading || renderer_.last_timings().horizons_reused;
   t.stale_texels = renderer_.last_timings().stale_texels;
@@ -186,13 +186,15 @@ ViewTimings SceneView::draw(const ViewFrame& frame, int width, int height, bool 
   t.terrain_ms = lap();
   // After the terrain: the sky, at the far plane, is shaded only where no ground is.
   if (perspective) {
-    if (!baked_ || !same_lighting(baked_for_, frame.shading.lighting) || baked_scale_ != shaded.display_scale) {
+    if (!baked_ || !same_lighting(baked_for_, frame.shading.lighting) || baked_scale_ != shaded.display_scale ||
+        baked_tone_ != frame.style.tone) {
       baked_ = bake_sky(frame.shading.lighting, shaded.display_scale);
       baked_for_ = frame.shading.lighting;
       baked_scale_ = shaded.display_scale;
-      sky_.set(*baked_);
+      baked_tone_ = frame.style.tone;
+      sky_.set(*baked_, baked_tone_);
     }
-    sky_.draw(view_proj, srgb);
+    sky_.draw(view_proj);
   }
   t.sky_ms = lap();
   if (frame.draw_bodies && perspective && baked_)

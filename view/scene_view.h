@@ -117,6 +117,7 @@ class SceneView {
   std::optional<SkyMap> baked_;  // for the lighting below
   std::optional<shading::Lighting> baked_for_;
   double baked_scale_ = 0.0;
+  shading::ToneCurve baked_tone_ = shading::ToneCurve::Srgb;
 };
 
 }  // namespace skylit::view

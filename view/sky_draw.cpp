@@ -10,7 +10,6 @@
 
 #include "gpu/gl_context.h"
 #include "shading/sky/sky_model.h"
-#include "view/display_defines.h"
 
 namespace skylit::view {
 namespace {
@@ -53,34 +52,39 @@ SkyMap bake_sky(const std::optional<shading::Lighting>& lighting, double display
   return m;
 }
 
-SkyDraw::SkyDraw() : program_("view_sky.vert", "view_sky.frag", display_code_defines()) {
+// Saturated: the disc is far brighter than any surface.
+constexpr double kSunDisplay = 1e3;
+
+SkyDraw::SkyDraw() : program_("view_sky.vert", "view_sky.frag") {
   glCreateVertexArrays(1, &vao_);
 }
 
-void SkyDraw::set(const SkyMap& map) {
+void SkyDraw::set(const SkyMap& map, shading::ToneCurve tone) {
   if (map_.width() != map.azimuths || map_.height() != map.elevations) {
-    map_ = gpu::Texture2D(map.azimuths, map.elevations, gpu::TextureFormat::RGBA32F);
+    map_ = gpu::Texture2D(map.azimuths, map.elevations, gpu::TextureFormat::RGBA8);
     map_.set_linear_filter();
     glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   std::vector<float> rgba(static_cast<std::size_t>(map.azimuths) * map.elevations * 4, 1.0f);
+  // Codes, as the terrain's colour map holds them: the fragments filter them and write them.
+  auto code = [&](double display) { return static_cast<float>(shading::display_code_value(display, tone) / 255.0); };
   for (std::size_t t = 0; t < rgba.size() / 4; ++t)
-    for (int c = 0; c < 3; ++c) rgba[t * 4 + c] = map.rgb[t * 3 + c];
+    for (int c = 0; c < 3; ++c) rgba[t * 4 + c] = code(map.rgb[t * 3 + c]);
   map_.upload(rgba);
   light_ = map.light;
+  sun_code_ = code(kSunDisplay);
   gpu::throw_on_gl_error("SkyDraw::set");
 }
 
-void SkyDraw::draw(const glm::dmat4& view_proj, bool srgb) {
+void SkyDraw::draw(const glm::dmat4& view_proj) {
   const glm::mat4 inv(glm::inverse(view_proj));
   program_.use();
   program_.set_mat4("inverse_view_proj", glm::value_ptr(inv));
   const glm::vec3 s(light_.sun_direction);
   program_.set("sun_dir", s.x, s.y, s.z);
   program_.set("sun_cos_radius", light_.sun_up ? static_cast<float>(std::cos(kDrawnSunRadiusDeg * kPi / 180.0)) : 2.0f);
-  program_.set("sun_display", 1e3f, 1e3f, 1e3f);  // saturated: the disc is far brighter than any surface
-  program_.set("srgb", srgb ? 1 : 0);
+  program_.set("sun_code", sun_code_, sun_code_, sun_code_);
   map_.bind_sampler(1);
   glBindVertexArray(vao_);
   glDepthFunc(GL_LEQUAL);

@@ -14,6 +14,7 @@
 #include "gpu/buffers.h"
 #include "gpu/graphics_program.h"
 #include "shading/lighting.h"
+#include "shading/products.h"
 
 namespace skylit::view {
 
@@ -39,15 +40,17 @@ SkyMap bake_sky(const std::optional<shading::Lighting>& lighting, double display
 class SkyDraw {
  public:
   SkyDraw();
-  // Rebakes the map (the caller calls it when the lighting changes).
-  void set(const SkyMap& map);
+  // Rebakes the map as 8-bit display codes under `tone` (the caller calls it when the
+  // lighting, its display scale or the tone changes).
+  void set(const SkyMap& map, shading::ToneCurve tone);
   const SkyLight& light() const { return light_; }
-  void draw(const glm::dmat4& view_proj, bool srgb);
+  void draw(const glm::dmat4& view_proj);
 
  private:
   gpu::GraphicsProgram program_;
   gpu::Texture2D map_;
   SkyLight light_;
+  float sun_code_ = 1.0f;  // the disc's display code / 255
   std::uint32_t vao_ = 0;
 };
 

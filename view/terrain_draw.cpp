@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include "gpu/gl_context.h"
@@ -14,7 +15,7 @@ namespace skylit::view {
 namespace {
 
 gpu::GlslDefines terrain_defines(const terrain::HeightField& field) {
-  gpu::GlslDefines d = display_code_defines();
+  gpu::GlslDefines d;
   d.set("PATCH", kPatchQuads).set("NODATA", field.any_nodata() ? 1 : 0);
   return d;
 }
@@ -46,8 +47,9 @@ std::vector<std::uint32_t> patch_indices() {
   return out;
 }
 constexpr int kGroundIndices = kPatchQuads * kPatchQuads * 6, kSideIndices = kPatchQuads * 6;
+constexpr std::size_t kPatchesPerFlush = 128;
 
-// One node as view_terrain.vert reads it (std430).
+// One node as view_terrain.vert reads it: per-instance attributes 0 (ivec3) and 1 (float).
 struct NodeRecord {
   std::int32_t i0, j0, stride;
   float skirt_m;
@@ -58,8 +60,8 @@ struct NodeRecord {
 TerrainDraw::TerrainDraw(const terrain::HeightField& field)
     : lod_(field),
       heights_(field.width, field.height, gpu::TextureFormat::R32F),
-      colour_map_(field.width, field.height, gpu::TextureFormat::RGBA32F),
-      colour_kernel_(gpu::ComputeProgram::from_embedded("view_terrain_colour.comp")),
+      colour_map_(field.width, field.height, gpu::TextureFormat::RGBA8),
+      colour_kernel_(gpu::ComputeProgram::from_embedded("view_terrain_colour.comp", display_code_defines())),
       program_("view_terrain.vert", "view_terrain.frag", terrain_defines(field)),
       width_(field.width),
       height_(field.height),
@@ -74,6 +76,13 @@ TerrainDraw::TerrainDraw(const terrain::HeightField& field)
   glCreateBuffers(1, &indices_);
   glNamedBufferStorage(indices_, static_cast<GLsizeiptr>(idx.size() * sizeof(std::uint32_t)), idx.data(), 0);
   glVertexArrayElementBuffer(vao_, indices_);
+  glVertexArrayAttribIFormat(vao_, 0, 3, GL_INT, offsetof(NodeRecord, i0));
+  glVertexArrayAttribFormat(vao_, 1, 1, GL_FLOAT, GL_FALSE, offsetof(NodeRecord, skirt_m));
+  for (GLuint attribute : {0u, 1u}) {
+    glVertexArrayAttribBinding(vao_, attribute, 0);
+    glEnableVertexArrayAttrib(vao_, attribute);
+  }
+  glVertexArrayBindingDivisor(vao_, 0, 1);
   gpu::throw_on_gl_error("TerrainDraw");
 }
 
@@ -97,12 +106,16 @@ void TerrainDraw::sync(const terrain::HeightField& field) {
   revision_ = field.revision;
 }
 
-void TerrainDraw::set_colour(const gpu::GpuFrame& frame) {
+void TerrainDraw::set_colour(const gpu::GpuFrame& frame, shading::ToneCurve tone) {
   if (frame.width != width_ || frame.height != height_)
     throw std::invalid_argument("TerrainDraw: the frame is not of this field");
+  const bool same_map = colour_scale_ == frame.display_scale && colour_bands_ == frame.band_count &&
+                        colour_tone_ == tone;
+  if (same_map && colour_serial_ == frame.serial) return;
   colour_kernel_.set_uniform("field_size", width_, height_);
   colour_kernel_.set_uniform("band_count", frame.band_count);
   colour_kernel_.set_uniform("display_scale", static_cast<float>(frame.display_scale));
+  colour_kernel_.set_uniform("srgb", tone == shading::ToneCurve::Srgb ? 1 : 0);
   frame.bands.bind_storage(0);
   colour_map_.bind_image(0, false, true);
   auto colour = [&](const terrain::PixelRect& r) {
@@ -110,9 +123,7 @@ void TerrainDraw::set_colour(const gpu::GpuFrame& frame) {
     colour_kernel_.set_uniform("extent", r.width, r.height);
     colour_kernel_.dispatch_covering(r.width, r.height);
   };
-  const bool same_map = colour_scale_ == frame.display_scale && colour_bands_ == frame.band_count &&
-                        colour_serial_ + 1 == frame.serial;
-  if (frame.changed && same_map) {
+  if (frame.changed && same_map && colour_serial_ + 1 == frame.serial) {
     for (const terrain::PixelRect& r : *frame.changed) {
       // A nodata texel takes a neighbour's colour: one texel around changes with it.
       const int x0 = std::max(0, r.x0 - 1), y0 = std::max(0, r.y0 - 1);
@@ -125,6 +136,7 @@ void TerrainDraw::set_colour(const gpu::GpuFrame& frame) {
   colour_scale_ = frame.display_scale;
   colour_bands_ = frame.band_count;
   colour_serial_ = frame.serial;
+  colour_tone_ = tone;
 }
 
 void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian,
@@ -193,11 +205,10 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   program_.set("spacing", static_cast<float>(dx_), static_cast<float>(dy_));
   program_.set("exaggeration", static_cast<float>(style.exaggeration));
   set_curvature_uniforms(program_, drop);
-  program_.set("srgb", style.tone == shading::ToneCurve::Srgb ? 1 : 0);
   heights_.bind_sampler(0);
   colour_map_.bind_sampler(1);
-  node_buffer_.bind_storage(0);
-  // One draw for all the ground and one per side's skirts (llvmpipe pays per draw call
+  glVertexArrayVertexBuffer(vao_, 0, node_buffer_.id(), 0, sizeof(NodeRecord));
+  // Few draws for all the ground and one per side's skirts (llvmpipe pays per draw call
   // and per triangle); instances are drawn in order.
   // Back faces (slopes facing away, skirts seen from inside their patch) are hidden from
   // any eye above the terrain; culling them spares llvmpipe their binning.
@@ -206,12 +217,17 @@ void TerrainDraw::draw(const glm::dmat4& view_proj, const glm::dvec3& eye, doubl
   glBindVertexArray(vao_);
   auto draw_range = [&](std::size_t first_index, int count, std::size_t first_node, std::size_t instances) {
     if (instances == 0) return;
-    program_.set("first_node", static_cast<int>(first_node));
-    glDrawElementsInstanced(GL_TRIANGLES, count, GL_UNSIGNED_INT,
-                            reinterpret_cast<const void*>(first_index * sizeof(std::uint32_t)),
-                            static_cast<GLsizei>(instances));
+    glDrawElementsInstancedBaseInstance(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(first_index * sizeof(std::uint32_t)),
+                                        static_cast<GLsizei>(instances), static_cast<GLuint>(first_node));
   };
-  draw_range(0, kGroundIndices, 0, nodes.size());
+  // The ground in runs of kPatchesPerFlush, flushed after each: llvmpipe bins a draw on
+  // this thread and rasterizes only what is flushed, so its raster threads shade the nearer
+  // patches while this thread bins the farther ones (terrain pass 0.85-0.9x on 2 cores).
+  for (std::size_t first = 0; first < nodes.size(); first += kPatchesPerFlush) {
+    draw_range(0, kGroundIndices, first, std::min(kPatchesPerFlush, nodes.size() - first));
+    if (first + kPatchesPerFlush < nodes.size()) glFlush();
+  }
   for (int side = 0; side < kSides; ++side)
     draw_range(kGroundIndices + static_cast<std::size_t>(side) * kSideIndices, kSideIndices, side_first[side],
                side_count[side]);

@@ -22,7 +22,7 @@ struct TerrainStyle {
   double exaggeration = 1.0;
   bool curvature = true;
   double max_error_px = kDefaultMeshErrorPx;  // the mesh's geometric error on screen (TerrainLod)
-  shading::ToneCurve tone = shading::ToneCurve::Srgb;
+  shading::ToneCurve tone = shading::ToneCurve::Srgb;  // of the colour map (TerrainDraw::set_colour)
 };
 
 class TerrainDraw {
@@ -35,12 +35,13 @@ class TerrainDraw {
   // Re-uploads the rows the field's last edit changed (a no-op when the field's revision
   // is the one drawn).
   void sync(const terrain::HeightField& field);
-  // The colour of the draws that follow: the frame's display values, one RGBA32F texel
-  // per field texel, filtered by the fragments in one lookup (a fragment reading the float
-  // bands did 12 storage loads). Once per shading frame: the tiles of a screenshot redraw
-  // the same colour. A frame that says which texels changed (GpuFrame::changed) under
-  // the same display scale recolours only those.
-  void set_colour(const gpu::GpuFrame& frame);
+  // The colour of the draws that follow: the frame's 8-bit display codes under `tone`, one
+  // RGBA8 texel per field texel, filtered by the fragments in one lookup (on llvmpipe an
+  // 8-bit bilinear lookup costs a fraction of a float one, and the tone curve's pow runs
+  // once a texel instead of once a fragment). A no-op for the frame and tone it holds: the
+  // tiles of a screenshot redraw the same colour. A frame that says which texels changed
+  // (GpuFrame::changed) under the same display scale and tone recolours only those.
+  void set_colour(const gpu::GpuFrame& frame, shading::ToneCurve tone);
   // pixels_per_radian 0: orthographic (every node at full resolution). Needs set_colour().
   void draw(const glm::dmat4& view_proj, const glm::dvec3& eye, double pixels_per_radian, const TerrainStyle& style);
   std::size_t last_node_count() const { return nodes_; }
@@ -63,6 +64,7 @@ class TerrainDraw {
   double colour_scale_ = -1.0;  // what the colour map holds: the frame's display scale, bands, serial
   int colour_bands_ = 0;
   std::uint64_t colour_serial_ = 0;
+  shading::ToneCurve colour_tone_ = shading::ToneCurve::Srgb;
 };
 
 }  // namespace skylit::view

@@ -12,6 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -236,6 +237,29 @@ TEST(ViewWindow, TrackOutsideTheDemIsANoteAndTheViewerRuns) {
   EXPECT_EQ(read_output(dir.file("f.png")).w, 160);
 }
 
+// A DEM wider than one GPU frame takes (a sweep line of 2·16400 − 1 samples, over
+// GL_MAX_TEXTURE_SIZE: 16384 on llvmpipe, 32768 on large GPUs) is halved until it fits,
+// with a note, and the viewer runs.
+TEST(ViewWindow, ADemTooLargeForTheGpuIsShownCoarserWithANote) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  terrain::testing::RasterSpec spec;
+  spec.width = 16400;
+  spec.height = 64;
+  spec.values.resize(static_cast<std::size_t>(spec.width) * spec.height);
+  for (int j = 0; j < spec.height; ++j)
+    for (int i = 0; i < spec.width; ++i)
+      spec.values[static_cast<std::size_t>(j) * spec.width + i] = 500.0 + 200.0 * std::sin(i * 0.01) * std::cos(j * 0.1);
+  terrain::testing::make_raster(dir.file("wide.tif"), spec);
+  const skylit::testing::Run r = run_view(dir.file("wide.tif") + " --time 2026-06-21T18:00Z --width 160 --height 120 "
+                                          "--frames 2 --screenshot " + dir.file("w.png"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  const std::size_t note = r.out.find("the DEM is too large for one GPU frame: shown at 1/");
+  EXPECT_NE(note, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("error"), std::string::npos) << r.out;
+  EXPECT_EQ(read_output(dir.file("w.png")).w, 160);
+}
+
 // The sample track has 20 s of invalid fixes: there the aircraft is not drawn, the
 // follow camera holds where it last saw it (not off to the field's centre), and the
 // frames keep the horizons (the renderer's blocked kernels, with no spheres).
@@ -420,6 +444,20 @@ TEST(ViewWindow, NoDisplayPointsToRender) {
   EXPECT_EQ(r.status, 1) << out;
   EXPECT_NE(out.find("skylit render"), std::string::npos) << out;
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
+}
+
+// A display whose OpenGL stops short of 4.5 (Mesa told to offer 4.3; under Xvfb GLX is
+// always Mesa's): one line that says so, and no window.
+TEST(ViewWindow, NoOpenGl45SaysSoInOneLine) {
+  SKYLIT_REQUIRE(missing_xvfb());
+  ScratchDir dir;
+  const skylit::testing::Run r = run_view("--synthetic --time 2026-06-21T10:00:00Z --frames 2 --screenshot " +
+                                              dir.file("x.png"),
+                                          "MESA_GL_VERSION_OVERRIDE=4.3");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("no OpenGL 4.5 core context"), std::string::npos) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
 }
 
 // Without a display: the error is the option's, not the display's, so it came first.

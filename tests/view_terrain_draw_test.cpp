@@ -26,17 +26,22 @@ namespace {
 
 using TerrainDrawTest = gpu::testing::GpuTest;
 
+// The `shaded` frame of `f` (8 azimuths), kept on the GPU by `renderer`.
+gpu::GpuFrame shaded_on_gpu(gpu::GpuRenderer& renderer, const terrain::HeightField& f) {
+  renderer.set_field(f);
+  shading::ProductOptions o;
+  o.march.azimuths = 8;
+  renderer.set_options(o);
+  return renderer.frame_on_gpu(shading::Product::Shaded, {});
+}
+
 // The terrain of `f`, coloured by its `shaded` frame, seen by `camera` in a size² frame
 // cleared to magenta: RGB, top row first. `patches`, `skirts`: what the draw drew.
 std::vector<std::uint8_t> draw_terrain(const terrain::HeightField& f, const ViewCamera& camera, int size,
                                        const TerrainStyle& style, std::size_t* patches = nullptr,
                                        std::size_t* skirts = nullptr) {
   gpu::GpuRenderer renderer;
-  renderer.set_field(f);
-  shading::ProductOptions o;
-  o.march.azimuths = 8;
-  renderer.set_options(o);
-  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+  const gpu::GpuFrame shaded = shaded_on_gpu(renderer, f);
   TerrainDraw terrain(f);
   terrain.set_colour(shaded, style.tone);
   OffscreenTarget target(size, size);
@@ -128,11 +133,7 @@ TEST_F(TerrainDrawTest, PatchesOfOneStrideHangNoSkirt) {
 TEST_F(TerrainDrawTest, AnotherToneRecoloursTheSameFrame) {
   const terrain::HeightField f = gpu::testing::synthetic_field();
   gpu::GpuRenderer renderer;
-  renderer.set_field(f);
-  shading::ProductOptions o;
-  o.march.azimuths = 8;
-  renderer.set_options(o);
-  const gpu::GpuFrame shaded = renderer.frame_on_gpu(shading::Product::Shaded, {});
+  const gpu::GpuFrame shaded = shaded_on_gpu(renderer, f);
   const ViewCamera camera = ortho_nadir_camera(f, 1.0);
   OffscreenTarget target(f.width, f.height);
   target.bind();

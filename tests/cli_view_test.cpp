@@ -36,10 +36,19 @@ std::string missing_xvfb() {
   return std::system("command -v xvfb-run >/dev/null 2>&1") == 0 ? "" : "xvfb-run (package xvfb) is not installed";
 }
 
-// skylit-view in a fresh Xvfb server; stdout and stderr merged. `env`: variables for it.
+// skylit-view in a fresh Xvfb server: its own exit status and its stdout and stderr,
+// merged (not xvfb-run's: as it cleans up after a client that exits at once it may fail
+// with a line of its own). `env`: variables for it; `args` without single quotes.
 skylit::testing::Run run_view(const std::string& args, const std::string& env = "") {
-  return run_shell(env + " xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(SKYLIT_VIEW_BINARY) + " " + args +
-                   " 2>&1");
+  ScratchDir dir;
+  const std::string out = dir.file("out.txt"), status = dir.file("status.txt");
+  const skylit::testing::Run server =
+      run_shell(env + " xvfb-run -a -s '-screen 0 1280x1024x24' sh -c '" + std::string(SKYLIT_VIEW_BINARY) + " " +
+                args + " > " + out + " 2>&1; echo $? > " + status + "' 2>&1");
+  std::ifstream text(out), code(status);
+  skylit::testing::Run r{-1, std::string(std::istreambuf_iterator<char>(text), std::istreambuf_iterator<char>())};
+  if (!(code >> r.status)) r = {server.status, r.out + server.out};  // the viewer never ran
+  return r;
 }
 
 // skylit-view with no display: what must fail before a window opens.
@@ -452,19 +461,12 @@ TEST(ViewWindow, NoDisplayPointsToRender) {
 TEST(ViewWindow, NoOpenGl45SaysSoInOneLine) {
   SKYLIT_REQUIRE(missing_xvfb());
   ScratchDir dir;
-  // The viewer's own output and status: xvfb-run may add a line of its own as it cleans up
-  // after a client that exits at once.
-  const std::string out = dir.file("out.txt"), status = dir.file("status.txt");
-  run_shell("MESA_GL_VERSION_OVERRIDE=4.3 xvfb-run -a -s '-screen 0 640x480x24' sh -c '" +
-            std::string(SKYLIT_VIEW_BINARY) + " --synthetic --time 2026-06-21T10:00:00Z --frames 2 --screenshot " +
-            dir.file("x.png") + " > " + out + " 2>&1; echo $? > " + status + "' 2>&1");
-  std::ifstream in(out), code(status);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  int exit_status = -1;
-  code >> exit_status;
-  EXPECT_EQ(exit_status, 1) << text;
-  EXPECT_NE(text.find("no OpenGL 4.5 core context"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  const skylit::testing::Run r = run_view("--synthetic --time 2026-06-21T10:00:00Z --frames 2 --screenshot " +
+                                              dir.file("x.png"),
+                                          "MESA_GL_VERSION_OVERRIDE=4.3");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("no OpenGL 4.5 core context"), std::string::npos) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
 }
 

@@ -69,8 +69,8 @@ class Buffer {
 // RGBA8: unsigned normalised bytes, which a software rasteriser filters far faster than floats.
 enum class TextureFormat { R32F, RG32F, RGBA32F, RGBA8 };
 
-// A single-level 2D texture (float, or RGBA8 read as floats in [0, 1]) (no mipmaps, nearest filtering unless
-// set_linear_filter(), clamp to edge). Shaders read it with texelFetch (exact) or bind it as an image.
+// A single-level 2D texture, float or RGBA8 (read as floats in [0, 1]): no mipmaps,
+// nearest filtering unless set_linear_filter(), clamp to edge. Shaders read it with texelFetch (exact) or bind it as an image.
 class Texture2D {
  public:
   Texture2D() = default;

@@ -20,6 +20,8 @@ constexpr double kDrawnSunRadiusDeg = 0.8;
 // The terrain is drawn as a white surface; a camera exposed for real ground (albedo
 // about 0.3) sees the sky 1/0.3 times brighter against it than against white ground.
 constexpr double kSkyExposure = 1.0 / 0.3;
+// The disc's display value: saturated, as it is far brighter than any surface.
+constexpr double kSunDisplay = 1e3;
 
 }  // namespace
 
@@ -51,9 +53,6 @@ SkyMap bake_sky(const std::optional<shading::Lighting>& lighting, double display
   }
   return m;
 }
-
-// Saturated: the disc is far brighter than any surface.
-constexpr double kSunDisplay = 1e3;
 
 SkyDraw::SkyDraw() : program_("view_sky.vert", "view_sky.frag") {
   glCreateVertexArrays(1, &vao_);

@@ -26,3 +26,12 @@ float sweptSlope(int i, int j, vec2 u, float far_slope) {
   }
   return max(best, far_slope);
 }
+
+// Whether the ray from texel (i, j) along u stays on the grid through the near steps,
+// so that sweptSlope takes the far slope (it can then only rise above it).
+bool nearStepsOnGrid(int i, int j, vec2 u) {
+  float step_m = exactStepLength(j, u, 0.5);
+  for (int s = 1; s <= max(NEAR_STEPS, 1); ++s)
+    if (!onGrid(rayPoint(i, j, u, float(s) * step_m))) return false;
+  return true;
+}

@@ -204,6 +204,16 @@ void shadeTexel(int i, int j) {
     shadow[texel] = uintBitsToFloat(0x7fc00000u);
     return;
   }
+#if SUN_SWEPT && SUN_KEPT == 0
+  // Hidden by the far slope alone (the disc's level over the clip square) where the ray
+  // reaches the far field: the near steps could only raise it, and the surface's facing
+  // does not matter, so neither is computed (the same 0 as the whole path).
+  float far_slope = decodeFarSlope(texelFetch(far_tex, ivec3(i, j, 0), 0).r);
+  if (far_slope > hidden_slope && nearStepsOnGrid(i, j, vec2(sun_east, sun_north))) {
+    shadow[texel] = 0.0;
+    return;
+  }
+#endif
 #if SUN_KEPT == 1
   // A sun moved by less than the margin keeps the disc wholly on the same side of both
   // lines (the horizon's level moves by the change of elevation, the tangent plane's

@@ -593,6 +593,10 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
     EXPECT_EQ(out.listing(), before) << args << ": a failed run left files behind";
   }
   EXPECT_TRUE(fs::is_empty(out.file("exists")));
+  // Without -q too: a malformed zoom range fails before the DEM is read, so no progress
+  // line comes before its error.
+  const auto r = run_skylit("tiles " + dem() + " -o " + out.file("t.pmtiles") + " --zoom 12-10", true);
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
 }
 
 }  // namespace

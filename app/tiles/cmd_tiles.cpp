@@ -176,6 +176,7 @@ int run_tiles(const TilesArgs& a) {
       job.options.hillshade = shade::hillshade_options({}, 1.0, request.sun_azimuth_deg, request.sun_elevation_deg, true);
   }
 
+  if (!a.zoom.empty()) parse_zoom(a.zoom, 0);  // a malformed range fails before the DEM is read
   const terrain::TileWindowSource source(read_input(a));  // a DEM without a CRS fails here
   const terrain::HeightField& dem = source.dem().outline();
   const terrain::ZoomRange zooms = parse_zoom(a.zoom, source.native_zoom(a.tile_size));

@@ -288,6 +288,23 @@ TEST(Render, ALargerMeshErrorDrawsFewerPatchesAndMovesOnlyEdges) {
   EXPECT_LT(rms(fine, coarse), 8.0) << "codes";
 }
 
+TEST(Render, TrackOutsideTheDemIsANoteAndTheFramesAreWritten) {
+  ScratchDir dir;
+  const std::string far = skylit::testing::write_track_far_south(kTrack, dir.file("far.igc"));
+  const auto r = run_skylit("render --synthetic --scene-size 64 --size 64x36 --track " + far + " --fps 1 --duration 1 -o " +
+                                dir.file("f_%d.png"),
+                            true);
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("skylit: note: track 1 lies outside the DEM"), std::string::npos) << r.out;
+  EXPECT_EQ(read_output(dir.file("f_1.png")).w, 64);
+  // The sample track itself flies over the 256² scene (7.7 km): no note.
+  const auto over = run_skylit("render --synthetic --scene-size 256 --size 64x36 --track " + kTrack +
+                                   " --fps 1 --duration 0 -o " + dir.file("g_%d.png"),
+                               true);
+  EXPECT_EQ(over.status, 0) << over.out;
+  EXPECT_EQ(over.out.find("outside the DEM"), std::string::npos) << over.out;
+}
+
 TEST(Render, BadInputFailsInOneLine) {
   ScratchDir dir;
   auto fails = [&](const std::string& args, const std::string& needle) {

@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -92,6 +94,19 @@ inline void expect_clean_shade_failure(const terrain::testing::ScratchDir& dir, 
   EXPECT_EQ(r.out.rfind("skylit: error: ", 0), 0u) << r.out;
   EXPECT_NE(r.out.find(needle), std::string::npos) << "expected '" << needle << "' in: " << r.out;
   EXPECT_EQ(dir.listing(), before) << "a failed run left files behind";
+}
+
+// The IGC track at `igc` with its fixes' latitude degrees set to 10 (the sample glider
+// moved 36° south: nowhere near the synthetic scene), written to `out`; returns `out`.
+inline std::string write_track_far_south(const std::string& igc, const std::string& out) {
+  std::ifstream in(igc);
+  std::ostringstream moved;
+  for (std::string line; std::getline(in, line);) {
+    if (line.size() > 8 && line[0] == 'B') line.replace(7, 2, "10");
+    moved << line << "\n";
+  }
+  std::ofstream(out) << moved.str();
+  return out;
 }
 
 }  // namespace skylit::testing

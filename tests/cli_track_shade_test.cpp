@@ -100,6 +100,22 @@ TEST(CliTrackShade, TheAircraftsShadowFallsWhereTheSunProjectsIt) {
   }
 }
 
+TEST(CliTrackShade, ATrackBesideTheDemIsANote) {
+  ScratchDir dir;
+  const glm::dvec2 c = utm32(kLat, kLon);
+  const std::string track = igc(dir), out = dir.file("s.tif");
+  // GNSS heights (an offset above the ground would need ground under the fixes).
+  for (const double east : {0.0, 2000.0}) {  // the DEM under the fixes, then 2 km east of them
+    const std::string dem = flat_dem(dir, c + glm::dvec2(east, 0.0));
+    const auto r = run_skylit("shade " + dem + " -o " + out + " -p shadow --track " + track +
+                                  " --time 2026-06-21T10:00:01Z "
+                                  "--sun-azimuth 180 --sun-elevation 60 --overwrite",
+                              true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(r.out.find("note: --track: track 1 lies outside the DEM") != std::string::npos, east > 0.0) << r.out;
+  }
+}
+
 TEST(CliTrackShade, BadInputsFailWithOneLine) {
   ScratchDir dir;
   const std::string dem = flat_dem(dir, utm32(kLat, kLon)), track = igc(dir);

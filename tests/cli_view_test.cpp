@@ -232,15 +232,8 @@ TEST(ViewWindow, TheSameScriptGivesTheSameFrames) {
 TEST(ViewWindow, TrackOutsideTheDemIsANoteAndTheViewerRuns) {
   SKYLIT_REQUIRE(missing_xvfb());
   ScratchDir dir;
-  // The sample track moved 36° south: nowhere near the scene.
-  std::ifstream in(kTrack);
-  std::ostringstream moved;
-  for (std::string line; std::getline(in, line);) {
-    if (line.size() > 8 && line[0] == 'B') line.replace(7, 2, "10");
-    moved << line << "\n";
-  }
-  write_text(dir.file("far.igc"), moved.str());
-  const skylit::testing::Run r = run_view("--synthetic --track " + dir.file("far.igc") + " --width 160 --height 120 --frames 2 "
+  const std::string far = skylit::testing::write_track_far_south(kTrack, dir.file("far.igc"));
+  const skylit::testing::Run r = run_view("--synthetic --track " + far + " --width 160 --height 120 --frames 2 "
                          "--screenshot " + dir.file("f.png"));
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("outside the DEM"), std::string::npos) << r.out;

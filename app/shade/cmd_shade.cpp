@@ -423,6 +423,8 @@ int run_shade(const ShadeArgs& a) {
       throw std::invalid_argument("--track needs --time: the time (or series) at which to place the aircraft");
     aircraft.emplace(a.track, a.aircraft, parse_altitude_arg(a.altitude), field);
     if (!a.quiet) std::cerr << "skylit: aircraft: " << aircraft->summary() << "\n";
+    for (std::size_t k = 0; k < aircraft->tracks() && !a.quiet; ++k)
+      if (!aircraft->over_field(k)) std::cerr << "skylit: note: --track: track " << k + 1 << " lies outside the DEM\n";
   }
   if (const int under = shading::BlockerFrame::below_ground(field, spheres); under > 0 && !a.quiet)
     std::cerr << "skylit: note: --spheres: " << under << " sphere(s) centred below the ground; they shade only what "

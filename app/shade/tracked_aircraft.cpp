@@ -95,6 +95,14 @@ std::optional<skylit::flight::Pose> TrackedAircraft::pose_at(std::size_t k, doub
   return pose;
 }
 
+bool TrackedAircraft::over_field(std::size_t k) const {
+  const double w = (field_.width - 1) * field_.mean_dx(), h = (field_.height - 1) * field_.dy;
+  for (int s = 0; s <= 64; ++s)
+    if (const auto p = pose_at(k, start_ + (end_ - start_) * s / 64.0))
+      if (p->position.x >= 0 && p->position.x <= w && p->position.y <= 0 && p->position.y >= -h) return true;
+  return false;
+}
+
 std::vector<blockers::Sphere> TrackedAircraft::spheres_at(double unix_seconds) const {
   std::vector<blockers::Sphere> out;
   for (std::size_t k = 0; k < samplers_.size(); ++k) {

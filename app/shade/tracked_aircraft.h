@@ -37,6 +37,9 @@ class TrackedAircraft {
   // in the field frame; nullopt when it has no pose then or fewer than two placed fixes.
   std::optional<skylit::flight::Pose> pose_at(std::size_t k, double unix_seconds) const;
   std::size_t tracks() const { return samplers_.size(); }
+  // Whether track k's aircraft is over the field at one of 65 times from start() to
+  // end(): false for a track flown wholly beside the DEM.
+  bool over_field(std::size_t k) const;
   // Track k's placed fixes (CRS positions), or null when it has fewer than two.
   const skylit::flight::TrackSampler* sampler(std::size_t k) const { return samplers_[k] ? &*samplers_[k] : nullptr; }
   // A CRS position (a placed fix's) in the field frame, as pose_at places it.

@@ -95,6 +95,10 @@ int run_render(const RenderArgs& a) {
 
   std::optional<shade::TrackedAircraft> aircraft;
   if (!a.tracks.empty()) aircraft.emplace(a.tracks, a.aircraft, parse_altitude_arg(a.altitude), field);
+  // A track wholly beside the DEM still sets the clock; its aircraft are not in the frames.
+  for (std::size_t k = 0; aircraft && !a.quiet && k < aircraft->tracks(); ++k)
+    if (!aircraft->over_field(k))
+      std::cerr << "skylit: note: track " << k + 1 << " lies outside the DEM; its aircraft are not in the frames\n";
   const sky::Observer place = sun_place(a.light.request, field);
   // The span of track time the frames cover; a date alone is that local day's daylight.
   const std::optional<std::pair<double, double>> day =

@@ -248,14 +248,9 @@ void Viewer::load_aircraft() {
   }
   info_.tracks = aircraft_->summary();
   // A track wholly outside the DEM is kept on the clock but cannot be seen.
-  const double w = (field_.width - 1) * field_.mean_dx(), h = (field_.height - 1) * field_.dy;
-  for (std::size_t k = 0; k < aircraft_->tracks(); ++k) {
-    bool inside = false;
-    for (int s = 0; s <= 64 && !inside; ++s)
-      if (const auto p = aircraft_->pose_at(k, aircraft_->start() + (aircraft_->end() - aircraft_->start()) * s / 64.0))
-        inside = p->position.x >= 0 && p->position.x <= w && p->position.y <= 0 && p->position.y >= -h;
-    if (!inside) note("track " + std::to_string(k + 1) + " lies outside the DEM; its aircraft are not in view");
-  }
+  for (std::size_t k = 0; k < aircraft_->tracks(); ++k)
+    if (!aircraft_->over_field(k))
+      note("track " + std::to_string(k + 1) + " lies outside the DEM; its aircraft are not in view");
 }
 
 void Viewer::apply_actions() {

@@ -45,14 +45,6 @@ std::string_view trim(std::string_view s) {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-// YYYY-MM-DD and nothing else.
-bool looks_like_date(std::string_view s) {
-  if (s.size() != 10 || s[4] != '-' || s[7] != '-') return false;
-  for (std::size_t i : {0, 1, 2, 3, 5, 6, 8, 9})
-    if (!is_digit(s[i])) return false;
-  return true;
-}
-
 CivilDate parse_date(std::string_view s) {
   const auto field = [&](std::size_t pos, std::size_t n) {
     int v = 0;
@@ -168,6 +160,14 @@ std::string date_text(const CivilDate& d) {
 }
 
 }  // namespace
+
+bool looks_like_date(std::string_view text) {
+  const std::string_view s = trim(text);
+  if (s.size() != 10 || s[4] != '-' || s[7] != '-') return false;
+  for (std::size_t i : {0, 1, 2, 3, 5, 6, 8, 9})
+    if (!is_digit(s[i])) return false;
+  return true;
+}
 
 double parse_duration_seconds(std::string_view text) {
   std::size_t pos = 0;

@@ -69,6 +69,9 @@ TimeSpec parse_time_spec(std::string_view text, const TimeSeriesOptions& options
 
 // True when the specification is a date, whose frames depend on the place.
 bool needs_place(const TimeSpec& spec);
+// True when the text has the shape of a date alone, YYYY-MM-DD (surrounding spaces
+// aside), whether or not that day exists.
+bool looks_like_date(std::string_view text);
 
 struct TimeSeries {
   std::vector<sky::UtcTime> instants;  // strictly increasing

@@ -321,6 +321,7 @@ TEST(Render, BadInputFailsInOneLine) {
   fails("--synthetic --time 2026-06-21T10:00Z --trail rainbow" + out, "--trail 'rainbow'");
   fails("--synthetic --time 2026-06-21T10:00Z --mesh-error 0.1" + out, "--mesh-error must be 0.5 to 16 pixels");
   fails("--synthetic --time 2026-12-21 --lat 85 --lon 0" + out, "polar night");
+  fails("--synthetic --time 2026-02-30" + out, "invalid date '2026-02-30': no such day");  // a date's own error
   fails("--synthetic --time 2026-06-21T10:00Z --size 641x360 -o " + dir.file("v.mp4"), "even");
   fails("--synthetic --time 2026-06-21T10:00Z --speed 0" + out, "--speed");
   fails(dir.file("absent.tif") + " --time 2026-06-21T10:00Z" + out, "absent.tif");

@@ -12,8 +12,11 @@ std::optional<std::pair<double, double>> date_daylight(const std::string& time, 
   shading::TimeSpec spec;
   try {
     spec = shading::parse_time_spec(time);
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;  // not a date: the caller's parse says what is wrong with it
+  } catch (const std::invalid_argument& e) {
+    // A day that does not exist is a date's error; anything else is not a date, and the
+    // caller's parse of a time says what is wrong with it.
+    if (shading::looks_like_date(time)) throw std::invalid_argument(std::string("--time: ") + e.what());
+    return std::nullopt;
   }
   if (!shading::needs_place(spec)) return std::nullopt;
   const shading::TimeSeries day = shading::resolve_time_series(spec, place);

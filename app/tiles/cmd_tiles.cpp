@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,8 +77,9 @@ ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileM
   return v;
 }
 
-terrain::ZoomRange parse_zoom(const std::string& text, int native) {
-  if (text.empty()) return terrain::default_zoom_range(native);
+// --zoom as given; nothing when it was not (the DEM's native zoom then sets the range).
+std::optional<terrain::ZoomRange> parse_zoom(const std::string& text) {
+  if (text.empty()) return std::nullopt;
   const auto bad = [&](const std::string& why) { return std::invalid_argument("--zoom '" + text + "': " + why); };
   const auto number = [&](const std::string& s) {
     if (s.empty() || s.size() > 3 || s.find_first_not_of("0123456789") != std::string::npos)
@@ -176,10 +178,10 @@ int run_tiles(const TilesArgs& a) {
       job.options.hillshade = shade::hillshade_options({}, 1.0, request.sun_azimuth_deg, request.sun_elevation_deg, true);
   }
 
-  if (!a.zoom.empty()) parse_zoom(a.zoom, 0);  // a malformed range fails before the DEM is read
+  const std::optional<terrain::ZoomRange> given_zooms = parse_zoom(a.zoom);  // before the DEM is read
   const terrain::TileWindowSource source(read_input(a));  // a DEM without a CRS fails here
   const terrain::HeightField& dem = source.dem().outline();
-  const terrain::ZoomRange zooms = parse_zoom(a.zoom, source.native_zoom(a.tile_size));
+  const terrain::ZoomRange zooms = given_zooms ? *given_zooms : terrain::default_zoom_range(source.native_zoom(a.tile_size));
   const terrain::LonLatBox ll = terrain::dem_lon_lat_bounds(dem);
   const terrain::MercatorBox box = terrain::dem_mercator_bounds(dem);
   const double poleward = std::max(std::abs(ll.south), std::abs(ll.north));

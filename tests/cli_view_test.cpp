@@ -103,8 +103,9 @@ TEST(ViewWindow, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
   const double easting = scene.georef.geotransform[0] + (at.x / scene.dx(0) + 0.5) * scene.georef.geotransform[1];
   const double northing = scene.georef.geotransform[3] + (-at.y / scene.dy + 0.5) * scene.georef.geotransform[5];
 
-  // Flat ground at 500 m, 5 m texels, 6 km around the aircraft.
-  const int side = 1200;
+  // Flat ground at 500 m, 5 m texels, 3.2 km around the aircraft (its shadow lies 1.2 km
+  // away: checked below).
+  const int side = 640;
   const double dx = 5.0, ground = 500.0;
   terrain::testing::RasterSpec spec;
   spec.width = spec.height = side;
@@ -133,6 +134,10 @@ TEST(ViewWindow, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
 
   // Straight down from 600 m over the shadow: the aircraft is above the eye, out of view.
   const double eye_height = 600.0;
+  // The view's footprint (50° vertical field, 4:3) around the shadow lies on the DEM.
+  const double reach = eye_height * std::tan(25.0 * M_PI / 180.0) * 4.0 / 3.0;
+  const double half = 0.5 * side * dx;  // the DEM's centre is (half, −half)
+  ASSERT_LT(std::max(std::abs(shadow.x - half), std::abs(shadow.y + half)) + reach, half);
   std::ostringstream script;
   script << "0 pose " << shadow.x << " " << shadow.y << " " << ground + eye_height << " 0 -89\n";
   write_text(dir.file("s.txt"), script.str());

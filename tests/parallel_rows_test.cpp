@@ -26,7 +26,9 @@ TEST(ParallelRows, EveryRowOnceAndProgressRisingToOne) {
       for (int r = 0; r < rows; ++r) EXPECT_EQ(calls[static_cast<std::size_t>(r)], 1) << threads << " " << r;
       ASSERT_EQ(reported.size(), static_cast<std::size_t>(rows));
       for (std::size_t k = 1; k < reported.size(); ++k) EXPECT_GT(reported[k], reported[k - 1]);
-      if (rows > 0) EXPECT_DOUBLE_EQ(reported.back(), 1.0);
+      if (rows > 0) {
+        EXPECT_DOUBLE_EQ(reported.back(), 1.0);
+      }
     }
 }
 

@@ -47,7 +47,7 @@ std::optional<std::string> fingerprint_difference(const std::string& stored, con
 void check_resume_fingerprint(const std::filesystem::path& archive, const std::optional<std::string>& stored,
                               const std::string& wanted) {
   if (wanted.empty()) return;
-  const std::string where = "'" + archive.string() + "': ";
+  const std::string where = std::string("'") + archive.string() + "': ";
   if (!stored)
     throw TileArchiveError(where + "cannot resume: it records no run options (made by another program or an older "
                                    "skylit); pass --overwrite to start afresh",

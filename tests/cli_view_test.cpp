@@ -24,6 +24,7 @@
 #include "shading/lighting.h"
 #include "shading/sky/time_utc.h"
 #include "shading/time_series.h"
+#include "view/scene_view.h"
 
 namespace skylit::testing {
 namespace {
@@ -134,8 +135,10 @@ TEST(ViewWindow, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
 
   // Straight down from 600 m over the shadow: the aircraft is above the eye, out of view.
   const double eye_height = 600.0;
-  // The view's footprint (50° vertical field, 4:3) around the shadow lies on the DEM.
-  const double reach = eye_height * std::tan(25.0 * M_PI / 180.0) * 4.0 / 3.0;
+  // The view's footprint (the window's vertical field, 400 × 300 px) around the shadow
+  // lies on the DEM.
+  const double tan_half_fovy = std::tan(0.5 * view::kFovyDeg * M_PI / 180.0);
+  const double reach = eye_height * tan_half_fovy * 4.0 / 3.0;
   const double half = 0.5 * side * dx;  // the DEM's centre is (half, −half)
   ASSERT_LT(std::max(std::abs(shadow.x - half), std::abs(shadow.y + half)) + reach, half);
   std::ostringstream script;
@@ -168,7 +171,7 @@ TEST(ViewWindow, AircraftShadowLandsWhereTheSunRayMeetsTheGround) {
     }
   ASSERT_GT(darkest, 20.0) << "the balloon's penumbra takes a good part of the sun";
   // Pixels to metres on the ground straight below: eye_height / pixels per radian.
-  const double metres_per_px = eye_height * 2.0 * std::tan(25.0 * M_PI / 180.0) / a.h;
+  const double metres_per_px = eye_height * 2.0 * tan_half_fovy / a.h;
   EXPECT_LT(std::hypot(si / weight - want_i, sj / weight - want_j) * metres_per_px, 10.0)
       << "shadow centroid (" << si / weight << ", " << sj / weight << ") px, ray geometry (" << want_i << ", "
       << want_j << ")";

@@ -2,6 +2,8 @@
 #include "app/common/gdal_style_args.h"
 #include "app/common/option_flags.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <exception>
 #include <iostream>

@@ -2,7 +2,7 @@
 // options on the root app and, when selected, stores its action in `run`.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 #include <functional>
 

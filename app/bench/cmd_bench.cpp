@@ -14,6 +14,8 @@
 #include "terrain/dem_reader.h"
 #include "terrain/synthetic.h"
 
+#include <CLI/CLI.hpp>
+
 #include <filesystem>
 #include <iostream>
 #include <memory>

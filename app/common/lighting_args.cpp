@@ -2,6 +2,8 @@
 
 #include "terrain/geolocation.h"
 
+#include <CLI/CLI.hpp>
+
 #include <stdexcept>
 
 namespace skylit::app {

@@ -3,7 +3,7 @@
 // front end spells and resolves them the same way.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 #include <optional>
 #include <string>

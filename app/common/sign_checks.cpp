@@ -1,5 +1,7 @@
 #include "app/common/sign_checks.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <functional>
 #include <string>

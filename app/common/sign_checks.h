@@ -3,7 +3,7 @@
 // 17976931348623157…"); these say what is wanted in one short line.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 namespace skylit::app {
 

@@ -9,6 +9,8 @@
 #include "flight/mesh_io.h"
 #include "flight/sphere_fit.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>

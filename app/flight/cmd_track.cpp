@@ -2,6 +2,8 @@
 // prints what it holds: a short summary, or with --json every fix with its altitude
 // channels and their datums; with --dem also the terrain's light on each fix's aircraft
 // (track_terrain.h). Bad files end in one line and exit code 1.
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <memory>

@@ -4,6 +4,8 @@
 #include "app/commands.h"
 #include "app/common/synthetic_scene.h"
 
+#include <CLI/CLI.hpp>
+
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>

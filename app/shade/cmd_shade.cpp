@@ -31,6 +31,8 @@
 #include "terrain/geolocation.h"
 #include "terrain/synthetic.h"
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -1,5 +1,7 @@
 // `skylit sun`: solar azimuth, elevation and the day's rise/noon/set for a
 // place and a UTC instant (NREL SPA, shading/sky/sun_position.h).
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <memory>

@@ -1,5 +1,7 @@
 #include "app/shade/hillshade_args.h"
 
+#include <CLI/CLI.hpp>
+
 #include <stdexcept>
 
 namespace skylit::app::shade {

@@ -4,7 +4,7 @@
 
 #include "shading/relief/gdal_hillshade.h"
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 #include <optional>
 #include <string>

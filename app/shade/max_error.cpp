@@ -2,6 +2,8 @@
 
 #include "shading/quality_front.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdlib>
 #include <sstream>

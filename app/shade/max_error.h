@@ -5,7 +5,7 @@
 
 #include "shading/products.h"
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 #include <optional>
 #include <string>

@@ -2,6 +2,8 @@
 // shading product or a DEM encoding, per zoom from windows with a halo (docs/tiles.md).
 // Every check that can fail is made before the archive is opened, so a bad run leaves
 // no output behind.
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdint>
 #include <filesystem>

@@ -1,5 +1,7 @@
 #include "app/tiles/merge_cmd.h"
 
+#include <CLI/CLI.hpp>
+
 #include <filesystem>
 #include <iostream>
 #include <memory>

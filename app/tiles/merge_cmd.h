@@ -1,7 +1,7 @@
 // `skylit tiles merge A B ... -o OUT`: shard archives (of any kinds) into one.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "app/common/cli_fwd.h"
 
 #include "app/commands.h"
 

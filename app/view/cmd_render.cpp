@@ -21,6 +21,8 @@
 #include "view/scene_view.h"
 #include "view/lighting_reuse.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -2,6 +2,8 @@
 // so the headless commands never link or load GLFW and X.
 #include "app/commands.h"
 
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <cerrno>

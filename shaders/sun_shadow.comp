@@ -90,9 +90,12 @@ layout(binding = FAR_BINDING) uniform usampler2DArray far_tex;
 #if SUN_KEPT == 2
 layout(std430, binding = SUN_KEPT_BINDING) writeonly buffer SunKept { float kept_elevation[]; };
 #endif
-float sunHorizon(int i, int j) {
-  float best = sweptSlope(i, j, vec2(sun_east, sun_north), decodeFarSlope(texelFetch(far_tex, ivec3(i, j, 0), 0).r));
+float sunHorizonFrom(int i, int j, float far_slope) {
+  float best = sweptSlope(i, j, vec2(sun_east, sun_north), far_slope);
   return isinf(best) ? -HALF_PI : clamp(atan(best), -HALF_PI, HALF_PI);
+}
+float sunHorizon(int i, int j) {
+  return sunHorizonFrom(i, j, decodeFarSlope(texelFetch(far_tex, ivec3(i, j, 0), 0).r));
 }
 #else
 // marched_elevation (sun_light.cpp) for a level-0 plain-max march: running max of
@@ -242,7 +245,9 @@ void shadeTexel(int i, int j) {
     shadow[texel] = 0.0;
     return;
   }
-#if SUN_KEPT != 2
+#if SUN_SWEPT && SUN_KEPT == 0
+  float horizon = sunHorizonFrom(i, j, far_slope);  // the far code read above, once
+#elif SUN_KEPT != 2
   float horizon = sunHorizon(i, j);
 #endif
   float y = (horizon - sun_elevation) / DISC_RADIUS;

@@ -234,6 +234,18 @@ BENCHMARK(BM_SweepFarSlopes)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
+// The same within a maximum distance of 3 km (100 texels of 30 m), one thread: the
+// tiles' sweep (a window of two hulls, horizon_sweep.h), whose cost is per observer.
+void BM_SweepFarSlopesBounded(benchmark::State& state) {
+  const tr::HeightField& field = scene(static_cast<int>(state.range(0)));
+  horizon::MarchOptions o;
+  o.max_distance_m = 3000.0;
+  const horizon::Heading u = horizon::heading_from_geographic(horizon::band_azimuth(1, 12));
+  for (auto _ : state) benchmark::DoNotOptimize(horizon::sweep_far_slopes(field, u, o, 1).data());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(field.size()));
+}
+BENCHMARK(BM_SweepFarSlopesBounded)->ArgNames({"size"})->Arg(1024)->UseRealTime()->Unit(benchmark::kMillisecond);
+
 // The sun's sweep (K 8, 3 lines, shading::sun_march_options) with the floor of a sun
 // at `elevation` degrees (shading::sun_sweep_floor: none below 30°), one thread, 1024²:
 // what the floor saves by the sun's height.

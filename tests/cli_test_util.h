@@ -34,7 +34,7 @@ inline Run run_shell(const std::string& cmd) {
 }
 
 // Its stdout, and its stderr merged into it or left to the test's own stderr (shown on a
-// failure, and read by tests/lsan_tracer_retry.sh in the sanitizer build).
+// failure).
 inline Run run_skylit(const std::string& args, bool merge_stderr = false) {
   return run_shell(std::string(SKYLIT_BINARY) + " " + args + (merge_stderr ? " 2>&1" : ""));
 }

@@ -220,12 +220,8 @@ TEST(ViewWindow, TheSameScriptGivesTheSameFrames) {
     std::string script = std::string("0 press equal\n3 look 40 -10\n5 press 2\n8 wheel 2\n12 screenshot ") +
                          dir.file(name) + "\n12 quit\n";
     write_text(dir.file("s.txt"), script);
-    // In the sanitizer build LeakSanitizer's own tracer thread dies (signal 11) at this
-    // run's exit when this test starts it (not from a shell): its leak check is off
-    // here only; the other window tests keep it.
-    const skylit::testing::Run r = run_view(
-        "--synthetic --track " + kTrack + " --width 320 --height 180 --script " + dir.file("s.txt"),
-        "env ASAN_OPTIONS=detect_leaks=0");
+    const skylit::testing::Run r =
+        run_view("--synthetic --track " + kTrack + " --width 320 --height 180 --script " + dir.file("s.txt"));
     ASSERT_EQ(r.status, 0) << r.out;
     shots.push_back(read_output(dir.file(name)));
   }

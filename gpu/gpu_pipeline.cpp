@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -132,6 +133,13 @@ GlslDefines& add_far_code_defines(GlslDefines& d) {
   return d.set("FAR_CODE_HALF_RANGE", horizon::kFarCodeHalfRange).set("FAR_CODE_MAX", horizon::kFarCodeMax);
 }
 
+// The defines of a kernel that finds texels' own sweep horizons (horizon_near.glsl):
+// their near steps, the far codes' texture unit and constants, and one row spacing.
+GlslDefines& add_swept_defines(GlslDefines& d, const shading::ProductOptions& o, bool one_dx) {
+  d.set("ONE_DX", one_dx ? 1 : 0).set("NEAR_STEPS", o.march.sweep_near_steps).set("FAR_BINDING", kFar);
+  return add_far_code_defines(d);
+}
+
 GlslDefines common_defines(int azimuths, const shading::ProductOptions& o) {
   GlslDefines d;
   d.set("LOCAL_SIZE_X", kLocalSize)
@@ -223,12 +231,15 @@ struct SweepTextures {
 // layer by layer.
 // The host takes a floor for the slopes (horizon::sweep_far_slopes; the kernel sweeps
 // every slope exactly, which the floor allows).
+// `observer_step`: a sub-sampled field's, whose coarse texels' far slopes alone are read
+// (horizon::sweep_far_slopes; the kernel sweeps every texel).
 void sweep_pass(const ComputeProgram* kernel, const terrain::HeightField& field, const horizon::MarchOptions& o,
                 const std::vector<horizon::Heading>& headings, const TextureArray& far, SweepTextures& textures,
-                double floor_slope = -std::numeric_limits<double>::infinity()) {
+                double floor_slope = -std::numeric_limits<double>::infinity(), int observer_step = 1) {
   if (!kernel) {
     for (std::size_t k = 0; k < headings.size(); ++k)
-      far.upload_layer(static_cast<int>(k), horizon::sweep_far_slopes(field, headings[k], o, 0, floor_slope));
+      far.upload_layer(static_cast<int>(k),
+                       horizon::sweep_far_slopes(field, headings[k], o, 0, floor_slope, observer_step));
     return;
   }
   const ComputeProgram& sweep = *kernel;
@@ -408,6 +419,20 @@ struct GpuProductPipeline::Impl {
   SweepTextures sweep_textures;  // the sweep's (shading/horizon/horizon_sweep.h)
   bool last_compute_swept = false;  // far_codes() holds the last compute()'s
   std::vector<horizon::Heading> band_headings;
+  // horizon_march.comp for a sub-sampled sweep (SWEPT: its pass 0 on the sweep's
+  // horizons), [one_dx]. Compiled at first use.
+  std::optional<ComputeProgram> swept_march[2];
+  const ComputeProgram& swept_march_kernel(const shading::ProductOptions& o, bool one_dx) {
+    std::optional<ComputeProgram>& slot = swept_march[one_dx ? 1 : 0];
+    if (!slot) {
+      GlslDefines d = march_defines;
+      add_swept_defines(d.set("SWEPT", 1), o, one_dx);
+      const auto compile_start = Clock::now();
+      slot.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
+      compile_ms += ms_since(compile_start);
+    }
+    return *slot;
+  }
   // surface_products.comp [cache][swept]: on the march's sigma buffer, or [.][1] on the
   // sweep's far slopes (SWEPT: near steps in the kernel); cache: VisCache (VIS_CACHE,
   // and from the kept visibility, SKY_CACHE 1 keeping the sky irradiance or 2 reading it).
@@ -441,13 +466,7 @@ struct GpuProductPipeline::Impl {
           .set("VIS_BINDING", kVis)
           .set("KEPT_HORIZON_BINDING", kKeptHorizons)
           .set("KEPT_SKY_BINDING", kKeptSky);
-      if (swept) {
-        d.set("RAY_TEXTURES", 1)
-            .set("ONE_DX", one_dx ? 1 : 0)
-            .set("NEAR_STEPS", o.march.sweep_near_steps)
-            .set("FAR_BINDING", kFar);
-        add_far_code_defines(d);
-      }
+      if (swept) add_swept_defines(d.set("RAY_TEXTURES", 1), o, one_dx);
       const auto compile_start = Clock::now();
       slot.emplace(ComputeProgram::from_embedded("surface_products.comp", d));
       compile_ms += ms_since(compile_start);
@@ -819,6 +838,8 @@ GpuProductPipeline::GpuProductPipeline(Product product, const shading::ProductOp
       .set("PRODUCT_IRRADIANCE", static_cast<int>(Product::Irradiance))
       .set("PRODUCT", static_cast<int>(product))
       .set("LIT", lit ? 1 : 0)
+      .set("SUBSAMPLE", options.subsample)
+      .set("COARSE_SIGMA_UNIT", kCoarseSigma)
       .set("EXACT_MARCH", options.exact ? 1 : 0)
       .set("PI", std::numbers::pi)
       .set("HALF_PI", std::numbers::pi / 2)
@@ -1202,10 +1223,15 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   check_storage_size(sigma_bytes, "GPU pipeline: one row of horizon bands");
   Buffer sigma(sigma_bytes);
   Buffer coarse_sigma;
+  BufferTexture coarse_tex;  // the sweep's product kernel reads the coarse horizons through it
   if (s > 1) {
     check_storage_size(coarse_bytes, "GPU pipeline: the coarse horizons of a row chunk");
     coarse_sigma = Buffer(coarse_bytes);
     coarse_sigma.bind_storage(kCoarseSigma);
+    if (sweep) {
+      coarse_tex = BufferTexture(coarse_sigma);
+      coarse_tex.bind_sampler(kCoarseSigma);
+    }
   }
   Buffer output(static_cast<std::size_t>(chunk) * w * out_bands * sizeof(float));
   k.field.heights().bind_storage(kHeights);  // after the pyramid build, which binds its own
@@ -1295,7 +1321,14 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     GpuTimer sweep_timer;
     {
       ScopedGpuTimer timing(sweep_timer);
-      sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
+      if (s == 1) {
+        sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
+      } else {  // the coarse texels the region's texels mix
+        horizon::MarchOptions o = mOptions.march;
+        o.region = horizon::subsample_region(field, o.region, s);
+        sweep_pass(k.sweep_kernel(mOptions, false), field, o, k.band_headings, far, k.sweep_textures,
+                   -std::numeric_limits<double>::infinity(), s);
+      }
     }
     t.march_ms += sweep_timer.elapsed_ms();
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute
@@ -1307,7 +1340,12 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     d.set("ONE_DX", 1);
     k.march_one_dx.emplace(ComputeProgram::from_embedded("horizon_march.comp", d));
   }
-  const ComputeProgram* march = sweep || reuse ? nullptr : one_dx ? &*k.march_one_dx : &*k.march;
+  // A sub-sampled sweep finds its coarse texels' horizons with the march's pass 0; the
+  // product kernel mixes them (surface_products.comp).
+  const ComputeProgram* march = reuse || (sweep && s == 1) ? nullptr
+                                : sweep                     ? &k.swept_march_kernel(mOptions, one_dx)
+                                : one_dx                    ? &*k.march_one_dx
+                                                            : &*k.march;
   if (march) {
     set_grid_uniforms(*march, field);
     if (one_dx) march->set_uniform("grid_dx", static_cast<float>(field.dx_per_row.front()));
@@ -1332,6 +1370,10 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
   if (s > 1 && march) {
     march->set_uniform("coarse_width", coarse_x.count());
     march->set_uniform("coarse_chunk_rows", coarse_chunk_rows);
+  }
+  if (s > 1 && sweep && products.has_uniform("coarse_width")) {  // absent where no product reads horizons
+    products.set_uniform("coarse_width", coarse_x.count());
+    products.set_uniform("coarse_chunk_rows", coarse_chunk_rows);
   }
 
   shading::ProductBands out{w, h, out_bands, {}, {}};
@@ -1367,8 +1409,9 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
       }
       t.march_ms += march_timer.elapsed_ms();
       march_kernel->set_uniform("march_pass", 1);
+      if (product_kernel.has_uniform("coarse_row_offset")) product_kernel.set_uniform("coarse_row_offset", y0);
     }
-    if (march_kernel) {
+    if (march_kernel && !sweep) {
       {
         ScopedGpuTimer timing(march_timer);
         march_kernel->dispatch_covering(cols, rows, bands);

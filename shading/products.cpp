@@ -66,7 +66,7 @@ void validate_subsample(const ProductOptions& options) {
   const int s = options.subsample;
   if (s != 1 && s != 2 && s != 4) throw std::invalid_argument("subsample must be 1, 2 or 4");
   if (s != 1 && options.exact)
-    throw std::invalid_argument("subsample needs the multi-resolution march (not the exact march)");
+    throw std::invalid_argument("subsample does not apply to the exact march (the ground truth)");
 }
 
 bool uses_lighting(Product product, const ProductOptions& options) {

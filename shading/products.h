@@ -119,14 +119,15 @@ struct ProductOptions {
   ShadedOptions shaded;
   // Horizon sub-sampling s ∈ {1, 2, 4} (DESIGN.md step 4, NS09 §7). Coarse positions
   // per axis: 0, s, 2s, … and always the last index (shading/horizon/horizon_subsample.h). The
-  // raw march maxima σ_k (before any floor) are marched at the coarse texels exactly as
-  // with s = 1; every other texel mixes them linearly in each axis between its
-  // bracketing coarse positions (bilinear; only the samples with a non-zero weight: one,
-  // two or four). Where one of those samples is nodata or its σ_k is not finite (−∞: no
-  // step on the grid, at edges), the texel marches its own ray for that azimuth.
-  // Normals, floors (receiver ground, tangent plane), svf/skyview formulas, NLP slices,
-  // wedges and shading stay per texel; the sun's shadow is never sub-sampled. Needs the
-  // multi-resolution march: `exact` (the ground truth) is rejected with s > 1.
+  // raw horizons σ_k (before any floor) of the coarse texels are marched or swept exactly
+  // as with s = 1; every other texel mixes them linearly in each axis between its
+  // bracketing coarse positions (bilinear: one, two or four samples). Where one of those
+  // samples is nodata or its σ_k is not finite (−∞: no step on the grid, at edges), the
+  // march marches the texel's own ray for that azimuth, and the sweep (whose far slopes
+  // exist for the coarse texels alone) mixes the finite samples, their weights
+  // renormalised (−∞ if none). Normals, floors (receiver ground, tangent plane),
+  // svf/skyview formulas, NLP slices, wedges and shading stay per texel; the sun's shadow
+  // is never sub-sampled. `exact` (the ground truth) is rejected with s > 1.
   int subsample = 1;
   unsigned threads = 0;         // worker threads over rows; 0 = hardware concurrency
   // Sky + sun (lighting.h). Required by shadow and irradiance; for shaded it replaces

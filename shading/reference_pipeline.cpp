@@ -19,7 +19,7 @@
 namespace skylit::shading {
 
 bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options) {
-  return options.march.method == horizon::HorizonMethod::Sweep && !options.exact && options.subsample == 1 &&
+  return options.march.method == horizon::HorizonMethod::Sweep && !options.exact &&
          horizon::sweep_applicable(field, options.march);
 }
 

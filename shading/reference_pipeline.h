@@ -19,8 +19,8 @@ namespace skylit::shading {
 
 // The horizon of one texel and heading, from either marcher; raw maxima, no floor.
 // Whether compute_product finds `field`'s horizons by sweeping (horizon_sweep.h): the
-// method asks for it, it applies (sweep_applicable), and neither the exact march nor
-// sub-sampling (a march feature) is asked for. Every backend decides by this.
+// method asks for it, it applies (sweep_applicable), and the exact march is not asked
+// for. Every backend decides by this.
 bool uses_sweep(const terrain::HeightField& field, const ProductOptions& options);
 
 class HorizonOracle {

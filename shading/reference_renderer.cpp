@@ -80,10 +80,12 @@ class LitShading {
 };
 
 // The raw horizons σ_k (no floor) of every texel, ProductOptions::subsample (products.h):
-// s = 1 marches each texel. s > 1 first marches the coarse texels of the whole field
-// (march_coarse); a texel's σ_k is then the bilinear mix of the coarse samples with a
-// non-zero weight, or its own march where one of them is not finite (nodata coarse
-// texel: NaN, never marched; no step on the grid: −∞). Holds (W_f/s)·(H_f/s)·W doubles.
+// s = 1 marches (or sweeps) each texel. s > 1 first finds those of the coarse texels of
+// the whole field (march_coarse, after sweep()); a texel's σ_k is then the bilinear mix
+// of its bracketing coarse samples. Where one of them is not finite (nodata coarse
+// texel: NaN, never found; no step on the grid: −∞) the march takes the texel's own
+// march, the sweep the mix of the finite ones, weights renormalised (−∞ if none): the
+// sweep has far slopes for the coarse texels alone. Holds (W_f/s)·(H_f/s)·W doubles.
 class HorizonSource {
  public:
   HorizonSource(const HorizonOracle& oracle, const terrain::HeightField& field, const ProductOptions& options,
@@ -91,12 +93,17 @@ class HorizonSource {
       : oracle_(oracle), field_(field), headings_(headings), cols_{field.width, options.subsample},
         rows_{field.height, options.subsample}, march_(options.march), sweep_(uses_sweep(field, options)) {}
 
-  // Sweep: the far slopes of every heading (W·N² floats), before horizons().
+  // Sweep: the far slopes of every heading (W·N² codes), before horizons(); sub-sampled,
+  // those of the texels whose own horizons are taken, over the region's coarse texels.
   void sweep(unsigned threads, const ProgressCallback& progress) {
     if (!sweep_) return;
     far_.resize(headings_.size());
-    parallel::parallel_rows(static_cast<int>(headings_.size()), threads,
-                  [&](int k) { far_[k] = horizon::sweep_far_slopes(field_, headings_[k], march_); }, progress);
+    horizon::MarchOptions m = march_;
+    m.region = horizon::subsample_region(field_, m.region, cols_.step);
+    parallel::parallel_rows(static_cast<int>(headings_.size()), threads, [&](int k) {
+      far_[k] = horizon::sweep_far_slopes(field_, headings_[k], m, 1, -std::numeric_limits<double>::infinity(),
+                                          cols_.step);
+    }, progress);
   }
 
   bool subsampled() const { return cols_.step > 1; }
@@ -110,6 +117,7 @@ class HorizonSource {
 
   void march_coarse(unsigned threads, const ProgressCallback& progress) {
     if (!subsampled()) return;
+    if (sweep_ && far_.empty()) throw std::logic_error("HorizonSource: march_coarse before sweep");
     const std::size_t w = headings_.size();
     coarse_.assign(static_cast<std::size_t>(cols_.count()) * rows_.count() * w,
                    std::numeric_limits<double>::quiet_NaN());
@@ -118,23 +126,21 @@ class HorizonSource {
       for (int ci = 0; ci < cols_.count(); ++ci) {
         const int i = cols_.position(ci);
         if (!field_.is_valid(i, j)) continue;  // stays NaN
-        for (std::size_t k = 0; k < w; ++k) coarse_[index(ci, cj, k)] = oracle_.max_elevation(i, j, headings_[k]);
+        for (std::size_t k = 0; k < w; ++k) coarse_[index(ci, cj, k)] = own(i, j, k);
       }
     }, progress);
   }
 
   void horizons(int i, int j, std::vector<double>& sigma) const {
-    if (sweep_) {
-      const std::size_t texel = static_cast<std::size_t>(j) * field_.width + i;
-      for (std::size_t k = 0; k < headings_.size(); ++k)
-        sigma[k] = horizon::sweep_max_elevation(field_, i, j, headings_[k], far_[k][texel], march_);
-      return;
-    }
     if (!subsampled()) {
-      for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = oracle_.max_elevation(i, j, headings_[k]);
+      for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = own(i, j, k);
       return;
     }
     const horizon::SubsampleAxis::Bracket x = cols_.bracket(i), y = rows_.bracket(j);
+    if (sweep_) {
+      for (std::size_t k = 0; k < headings_.size(); ++k) sigma[k] = finite_mix(x, y, k);
+      return;
+    }
     for (std::size_t k = 0; k < headings_.size(); ++k) {
       auto along_row = [&](int cj) {
         const double v0 = coarse_[index(x.c0, cj, k)];
@@ -143,11 +149,32 @@ class HorizonSource {
       const double r0 = along_row(y.c0);
       // Non-finite iff a sample with a non-zero weight is (σ is never +∞).
       const double v = y.c1 == y.c0 ? r0 : (1.0 - y.a) * r0 + y.a * along_row(y.c1);
-      sigma[k] = std::isfinite(v) ? v : oracle_.max_elevation(i, j, headings_[k]);
+      sigma[k] = std::isfinite(v) ? v : own(i, j, k);
     }
   }
 
  private:
+  // The bilinear mix of the finite samples of band k at the bracket (x, y), their weights
+  // renormalised; −∞ if none is finite.
+  double finite_mix(const horizon::SubsampleAxis::Bracket& x, const horizon::SubsampleAxis::Bracket& y,
+                    std::size_t k) const {
+    double sum = 0.0, weight = 0.0;
+    for (const auto& [cj, wy] : {std::pair{y.c0, 1.0 - y.a}, std::pair{y.c1, y.a}})
+      for (const auto& [ci, wx] : {std::pair{x.c0, 1.0 - x.a}, std::pair{x.c1, x.a}}) {
+        const double v = coarse_[index(ci, cj, k)];
+        if (!std::isfinite(v)) continue;
+        sum += wx * wy * v;
+        weight += wx * wy;
+      }
+    return weight > 0.0 ? sum / weight : -std::numeric_limits<double>::infinity();
+  }
+  // Texel (i, j)'s own raw horizon in band k: swept or marched.
+  double own(int i, int j, std::size_t k) const {
+    if (!sweep_) return oracle_.max_elevation(i, j, headings_[k]);
+    return horizon::sweep_max_elevation(field_, i, j, headings_[k],
+                                        far_[k][static_cast<std::size_t>(j) * field_.width + i], march_);
+  }
+
   std::size_t index(int ci, int cj, std::size_t k) const {
     return (static_cast<std::size_t>(cj) * cols_.count() + ci) * headings_.size() + k;
   }
@@ -309,10 +336,10 @@ ProductBands ReferenceRenderer::render(Product product, const ProductOptions& op
   HorizonSource horizons(oracle, field, options, headings);
   double coarse_share = 0.0, sweep_share = 0.0;
   if (!reuse) {
-    coarse_share = horizons.coarse_share();
-    horizons.march_coarse(options.threads, [&](double f) { main_progress(coarse_share * f); });
-    horizons.sweep(options.threads, [&](double f) { main_progress(0.5 * f); });
     sweep_share = horizons.sweeps() ? 0.5 : 0.0;
+    coarse_share = (1.0 - sweep_share) * horizons.coarse_share();
+    horizons.sweep(options.threads, [&](double f) { main_progress(sweep_share * f); });
+    horizons.march_coarse(options.threads, [&](double f) { main_progress(sweep_share + coarse_share * f); });
   }
 
   parallel::parallel_rows(field.height, options.threads, [&](int j) {

@@ -1,9 +1,11 @@
 // Horizon sub-sampling on the GPU (ProductOptions::subsample; shaders/horizon_march.comp
-// pass 0 marches the coarse texels, pass 1 mixes them bilinearly or marches a texel's
-// own ray) against the CPU reference shading::compute_product with the same options,
-// for s = 2 and 4: horizon, svf, skyview, shaded and irradiance, on the synthetic test
-// field with an extra nodata texel on the coarse grid (its neighbours fall back to their
-// own march). Row chunks of any size (also fewer rows than s) give the same bands.
+// pass 0 finds the coarse texels' horizons, pass 1 mixes them bilinearly or takes a
+// texel's own) against the CPU reference shading::compute_product with the same
+// options, for s = 2 and 4, with the march and with the sweep (its far slopes swept on
+// the host under llvmpipe, for the texels the passes read): horizon, svf, skyview,
+// shaded and irradiance, on the synthetic test field with an extra nodata texel on the
+// coarse grid (its neighbours fall back to their own horizons). Row chunks of any size
+// (also fewer rows than s) give the same bands.
 //
 // Tolerances: gpu_products_test.cpp's and gpu_lighting_test.cpp's float32 bounds (derived
 // there); the bilinear mix adds float rounding of ~1e-7 rad, far below them. The GPU and
@@ -22,6 +24,7 @@
 #include "gpu/gpu_pipeline.h"
 #include "shading/lighting.h"
 #include "shading/products.h"
+#include "shading/reference_pipeline.h"
 
 namespace skylit::gpu {
 namespace {
@@ -41,19 +44,22 @@ HeightField field_with_coarse_nodata() {
   return f;
 }
 
-ProductOptions options(int s) {
+using horizon::HorizonMethod;
+
+ProductOptions options(int s, HorizonMethod method) {
   ProductOptions o;
   o.march.azimuths = 16;
+  o.march.method = method;
   o.subsample = s;
   return o;
 }
 
-ProductOptions lit_options(int s) {
+ProductOptions lit_options(int s, HorizonMethod method) {
   shading::LightingRequest r;
   r.sun_azimuth_deg = 135.0;
   r.sun_elevation_deg = 30.0;
   r.sky = "uniform";
-  ProductOptions o = options(s);
+  ProductOptions o = options(s, method);
   o.march.azimuths = 8;
   o.lighting = shading::resolve_lighting(r, std::nullopt).lighting;
   return o;
@@ -92,9 +98,16 @@ Stats compare(const ProductBands& gpu, const ProductBands& cpu, double tol, bool
   return s;
 }
 
-void expect_matches(Product p, const ProductOptions& o, const HeightField& field) {
-  SCOPED_TRACE(std::string(shading::product_name(p)) + " s=" + std::to_string(o.subsample));
-  const ProductBands gpu = GpuProductPipeline(p, o).compute(field);
+// `host_sweep`: where the sweep's far slopes come from (the host's cores, or
+// horizon_sweep.comp, as on a GPU).
+void expect_matches(Product p, const ProductOptions& o, const HeightField& field, bool host_sweep = true) {
+  const std::string method = o.march.method == HorizonMethod::March ? "march"
+                             : host_sweep                           ? "sweep on the host"
+                                                                    : "sweep in the kernel";
+  SCOPED_TRACE(std::string(shading::product_name(p)) + " s=" + std::to_string(o.subsample) + " " + method);
+  GpuProductPipeline pipeline(p, o);
+  pipeline.set_sweeps_on_host(host_sweep);
+  const ProductBands gpu = pipeline.compute(field);
   const ProductBands cpu = shading::compute_product(field, p, o);
   const bool relative = p == Product::Irradiance;
   const double tol = p == Product::Horizon ? kHorizonTolDeg
@@ -103,7 +116,7 @@ void expect_matches(Product p, const ProductOptions& o, const HeightField& field
                      : relative            ? kIrradianceRelTol
                                            : kShadedTolCodes;
   const Stats s = compare(gpu, cpu, tol, relative);
-  std::cout << "[ s=" << o.subsample << " ] " << shading::product_name(p) << ": max |d|" << (relative ? " rel " : " ")
+  std::cout << "[ s=" << o.subsample << " " << method << " ] " << shading::product_name(p) << ": max |d|" << (relative ? " rel " : " ")
             << s.max_abs << ", within " << tol << ": " << 100.0 * s.within << "% of " << s.compared << "\n";
   EXPECT_EQ(s.nan_mismatches, 0);
   EXPECT_GT(s.compared, 0u);
@@ -120,41 +133,46 @@ void expect_matches(Product p, const ProductOptions& o, const HeightField& field
 
 TEST_F(GpuSubsampleTest, ProductsMatchReference) {
   const HeightField field = field_with_coarse_nodata();
-  for (int s : {2, 4}) {
-    EXPECT_TRUE(gpu_supports(Product::Shaded, options(s)));
-    for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
-      expect_matches(p, options(s), field);
-    expect_matches(Product::Irradiance, lit_options(s), field);
-  }
+  for (HorizonMethod method : {HorizonMethod::March, HorizonMethod::Sweep})
+    for (int s : {2, 4}) {
+      EXPECT_TRUE(gpu_supports(Product::Shaded, options(s, method)));
+      EXPECT_EQ(shading::uses_sweep(field, options(s, method)), method == HorizonMethod::Sweep);
+      for (Product p : {Product::Horizon, Product::Svf, Product::Skyview, Product::Shaded})
+        expect_matches(p, options(s, method), field);
+      expect_matches(Product::Irradiance, lit_options(s, method), field);
+      if (method == HorizonMethod::Sweep)
+        for (Product p : {Product::Horizon, Product::Shaded}) expect_matches(p, options(s, method), field, false);
+    }
 }
 
 // Chunks of 7 rows (rounded down to a multiple of s) and of 1 row (fewer than s: each
 // chunk marches the two coarse rows bracketing it) give the whole field's bands.
 TEST_F(GpuSubsampleTest, RowChunksMatchOneDispatch) {
   const HeightField field = field_with_coarse_nodata();
-  for (int s : {2, 4}) {
-    GpuProductPipeline pipeline(Product::Horizon, options(s));
-    const ProductBands whole = pipeline.compute(field);
-    for (int rows : {7, 1}) {
-      pipeline.set_invocations_per_dispatch(static_cast<std::size_t>(field.width) * 16 * rows);
-      const ProductBands chunked = pipeline.compute(field);
-      ASSERT_EQ(whole.data.size(), chunked.data.size());
-      for (std::size_t t = 0; t < whole.data.size(); ++t) {
-        if (std::isnan(whole.data[t]) && std::isnan(chunked.data[t])) continue;
-        ASSERT_EQ(whole.data[t], chunked.data[t]) << "s=" << s << ", " << rows << "-row chunks, value " << t;
+  for (HorizonMethod method : {HorizonMethod::March, HorizonMethod::Sweep})
+    for (int s : {2, 4}) {
+      GpuProductPipeline pipeline(Product::Horizon, options(s, method));
+      const ProductBands whole = pipeline.compute(field);
+      for (int rows : {7, 1}) {
+        pipeline.set_invocations_per_dispatch(static_cast<std::size_t>(field.width) * 16 * rows);
+        const ProductBands chunked = pipeline.compute(field);
+        ASSERT_EQ(whole.data.size(), chunked.data.size());
+        for (std::size_t t = 0; t < whole.data.size(); ++t) {
+          if (std::isnan(whole.data[t]) && std::isnan(chunked.data[t])) continue;
+          ASSERT_EQ(whole.data[t], chunked.data[t]) << "s=" << s << ", " << rows << "-row chunks, value " << t;
+        }
       }
     }
-  }
 }
 
 TEST_F(GpuSubsampleTest, ExactWithSubsampleIsRejected) {
-  ProductOptions o = options(2);
+  ProductOptions o = options(2, HorizonMethod::March);
   o.exact = true;
   try {
     GpuProductPipeline pipeline(Product::Svf, o);
     ADD_FAILURE() << "exact with subsample 2 accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "subsample needs the multi-resolution march (not the exact march)");
+    EXPECT_STREQ(e.what(), "subsample does not apply to the exact march (the ground truth)");
   }
 }
 

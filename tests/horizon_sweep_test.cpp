@@ -7,6 +7,7 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_ray.h"
+#include "shading/horizon/horizon_subsample.h"
 #include "shading/horizon/horizon_sweep.h"
 #include "shading/products.h"
 #include "shading/reference_pipeline.h"
@@ -336,6 +337,58 @@ TEST(HorizonSweep, AWantedRegionGetsTheWholeFieldsCodesAndTheRestIsSkipped) {
         }
         EXPECT_GT(skipped, outside / 2) << (f == &geographic ? "geographic" : "projected") << " D" << d;
       }
+}
+
+TEST(HorizonSweep, AnObserverStepKeepsTheCoarseCodesAndLeavesTheRestNone) {
+  // A sub-sampled field's observers (horizon_subsample.h), on projected and geographic
+  // rows, unbounded and bounded, with and without a region grown by its coarse texels:
+  // the coarse texels (0, s, 2s, … and the last index, restated here) get the codes of
+  // the sweep with s = 1, bit for bit, the others none.
+  HeightField projected = rough_field(61, 47, 30.0, 20.0, 30.0, 8, 200.0), geographic = projected;
+  make_geographic(geographic, 30.0, 50.0, 51.2);
+  for (const HeightField* f : {&projected, &geographic})
+    for (double d : {0.0, 400.0})
+      for (int s : {2, 4})
+        for (const terrain::PixelRect region : {terrain::PixelRect{}, terrain::PixelRect{13, 9, 21, 17}}) {
+          auto coarse = [&](int t, int n) { return t % s == 0 || t == n - 1; };
+          MarchOptions o = sweep_options(4, 1, 6.371e6), part_options = o;
+          o.max_distance_m = part_options.max_distance_m = d;
+          part_options.region = subsample_region(*f, region, s);
+          for (double deg : kHeadings) {
+            const Heading u = heading_deg(deg);
+            const auto all = sweep_far_slopes(*f, u, o, 0);
+            const auto part = sweep_far_slopes(*f, u, part_options, 0, -std::numeric_limits<double>::infinity(), s);
+            for (int j = 0; j < f->height; ++j)
+              for (int i = 0; i < f->width; ++i) {
+                const std::size_t t = static_cast<std::size_t>(j) * f->width + i;
+                const bool in_region = region.empty() || (i >= region.x0 && i < region.x1() && j >= region.y0 &&
+                                                          j < region.y1());
+                if (!coarse(i, f->width) || !coarse(j, f->height)) {
+                  ASSERT_EQ(part[t], kFarCodeNone) << case_name("step", deg, 4, 1) << " s" << s << " at " << i << "," << j;
+                } else if (in_region) {
+                  ASSERT_EQ(part[t], all[t]) << case_name("step", deg, 4, 1) << " s" << s << " at " << i << "," << j;
+                }
+              }
+          }
+        }
+  EXPECT_THROW(sweep_far_slopes(projected, heading_deg(30), sweep_options(4, 1), 1,
+                                -std::numeric_limits<double>::infinity(), 0),
+               std::invalid_argument);
+}
+
+TEST(HorizonSweep, ASubsampledRegionGrowsToTheCoarseTexelsItsTexelsMix) {
+  // Texel t mixes the coarse positions ⌊t/s⌋·s and min(⌈t/s⌉·s, n − 1), restated here.
+  const HeightField f = rough_field(23, 18, 30.0, 20.0, 30.0, 2, 200.0);
+  for (int s : {2, 4}) {
+    auto lo = [&](int t) { return t / s * s; };
+    auto hi = [&](int t, int n) { return std::min((t + s - 1) / s * s, n - 1); };
+    EXPECT_EQ(subsample_region(f, {5, 3, 6, 7}, s),
+              (terrain::PixelRect{lo(5), lo(3), hi(10, f.width) - lo(5) + 1, hi(9, f.height) - lo(3) + 1}));
+    EXPECT_EQ(subsample_region(f, {20, 15, 10, 10}, s), (terrain::PixelRect{lo(20), lo(15), 23 - lo(20), 18 - lo(15)}));
+    EXPECT_EQ(subsample_region(f, {}, s), terrain::PixelRect{});  // the whole field stays "all"
+    EXPECT_EQ(subsample_region(f, {30, 30, 4, 4}, s), (terrain::PixelRect{30, 30, 4, 4}));  // outside: unchanged
+  }
+  EXPECT_EQ(subsample_region(f, {5, 3, 6, 7}, 1), (terrain::PixelRect{5, 3, 6, 7}));
 }
 
 TEST(HorizonSweep, ThreadsSplitTheLinesWithoutChangingACode) {
@@ -753,12 +806,11 @@ TEST(HorizonSweep, ReferencePipelineSweepsWhereItAppliesAndMarchesElsewhere) {
   ProductOptions march = o;
   march.march.method = HorizonMethod::March;
   EXPECT_FALSE(same_bands(svf, compute_product(f, Product::Svf, march)));
-  // Sub-sampling is a march feature: the sweep falls back to the march, bit for bit.
+  // Sub-sampling keeps the sweep (products_subsample_test.cpp).
   o.subsample = march.subsample = 2;
-  EXPECT_FALSE(uses_sweep(f, o));
-  EXPECT_TRUE(same_bands(compute_product(f, Product::Svf, o), compute_product(f, Product::Svf, march)));
-  EXPECT_TRUE(same_bands(compute_product(f, Product::Horizon, o), compute_product(f, Product::Horizon, march)));
-  // So do the exact march and rows of several spacings.
+  EXPECT_TRUE(uses_sweep(f, o));
+  EXPECT_FALSE(same_bands(compute_product(f, Product::Svf, o), compute_product(f, Product::Svf, march)));
+  // The exact march and rows of several spacings march.
   o.subsample = march.subsample = 1;
   o.exact = march.exact = true;
   EXPECT_FALSE(uses_sweep(f, o));

@@ -180,9 +180,7 @@ std::vector<std::string> horizon_method_names() {
 std::string sweep_fallback_note(const terrain::HeightField& field, const shading::ProductOptions& o, bool asked) {
   if (!asked || o.march.method != horizon::HorizonMethod::Sweep || shading::uses_sweep(field, o)) return "";
   if (o.exact) return "--horizons sweep with --exact: the exact march runs instead";
-  const std::string why = o.subsample > 1 ? "--subsample " + std::to_string(o.subsample) + " sub-samples the march"
-                                          : horizon::sweep_inapplicable_reason(field, o.march);
-  return "--horizons sweep: " + why + "; the march runs instead";
+  return "--horizons sweep: " + horizon::sweep_inapplicable_reason(field, o.march) + "; the march runs instead";
 }
 
 // Upper bound of a multi-band series file held in memory before it is written.
@@ -512,7 +510,7 @@ void add_shade_command(CLI::App& root, Action& run) {
       ->check(CLI::IsMember({"linear", "bspline"}))
       ->capture_default_str();
   cmd->add_option("--subsample", args->options.subsample,
-                  "March horizons at every Nth texel and interpolate them; normals and shading stay per texel: 1 | 2 | 4")
+                  "Find horizons at every Nth texel each way and interpolate them; normals and shading stay per texel: 1 | 2 | 4")
       ->check(CLI::IsMember({1, 2, 4}))
       ->capture_default_str();
   cmd->add_option("--azimuths", args->options.march.azimuths, "Number of horizon azimuths W")->check(CLI::Range(1, 1024))->capture_default_str();
@@ -532,8 +530,8 @@ void add_shade_command(CLI::App& root, Action& run) {
   cmd->add_option("--horizons", args->horizons,
                   "How horizons are found: march (rays per texel over the height pyramid) | sweep (sweep lines "
                   "with convex hulls: near-exact horizons in O(N^2) per azimuth, within --max-distance if given; needs "
-                  "rows of spacings within 2x (not near a pole), a --max-distance beyond the near steps and no "
-                  "--subsample; elsewhere the march runs, with a note when sweep was asked for)")
+                  "rows of spacings within 2x (not near a pole) and a --max-distance beyond the near steps; elsewhere "
+                  "the march runs, with a note when sweep was asked for)")
       ->check(CLI::IsMember(horizon_method_names()))
       ->capture_default_str();
   cmd->add_option("--sweep-lines", args->options.march.sweep_lines,

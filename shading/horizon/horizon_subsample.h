@@ -1,8 +1,10 @@
 // The coarse grid of horizon sub-sampling (ProductOptions::subsample, products.h) along
 // one axis of `size` texels with step s: coarse positions 0, s, 2s, … and always the
-// last index size − 1. Shared by the CPU reference (reference_pipeline.cpp) and the GPU
-// host (gpu_pipeline.cpp); shaders/horizon_march.comp restates bracket() in GLSL.
+// last index size − 1. Shared by the CPU reference (reference_renderer.cpp) and the GPU
+// host (gpu_pipeline.cpp); shaders/subsample.glsl restates position() and bracket() in GLSL.
 #pragma once
+
+#include "terrain/height_field.h"
 
 #include <algorithm>
 
@@ -16,6 +18,8 @@ struct SubsampleAxis {
   int count() const { return (size - 1) / step + 1 + ((size - 1) % step != 0 ? 1 : 0); }
   // Texel index of coarse position c.
   int position(int c) const { return std::min(c * step, size - 1); }
+  // Whether texel t is a coarse position.
+  bool coarse(int t) const { return t % step == 0 || t == size - 1; }
 
   // Texel i lies between coarse positions c0 ≤ c1 with linear weight `a` on c1;
   // c0 == c1 (a = 0) when i is itself a coarse position.
@@ -30,5 +34,9 @@ struct SubsampleAxis {
     return {c0, c0 + 1, static_cast<double>(i - p0) / (p1 - p0)};
   }
 };
+
+// `region` (MarchOptions::region; empty: the whole field) grown by the coarse texels its
+// texels' horizons are interpolated from, within the field.
+terrain::PixelRect subsample_region(const terrain::HeightField& field, const terrain::PixelRect& region, int step);
 
 }  // namespace skylit::horizon

@@ -2,6 +2,7 @@
 
 #include "shading/horizon/horizon_exact.h"
 #include "shading/horizon/horizon_ray.h"
+#include "shading/horizon/horizon_subsample.h"
 #include "parallel/parallel_rows.h"
 
 #include <algorithm>
@@ -324,10 +325,12 @@ struct Observer {
 }  // namespace
 
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& o,
-                                            unsigned threads, double floor_slope) {
+                                            unsigned threads, double floor_slope, int observer_step) {
   validate(o);
   if (const std::string why = sweep_inapplicable_reason(field, o); !why.empty())
     throw std::invalid_argument("sweep: " + why);
+  if (observer_step < 1) throw std::invalid_argument("sweep: the observer step must be at least 1");
+  const SubsampleAxis observer_columns{field.width, observer_step}, observer_rows{field.height, observer_step};
   const SweepGeometry g = sweep_geometry(field, u, o.sweep_lines);
   const double drop = o.curvature.drop_per_square_metre() * g.step_m * g.step_m;  // per step²
   const double eps = edge_epsilon_texels(field);
@@ -390,7 +393,9 @@ std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, H
         if (std::abs(jb - b) > reach) break;
         if (jb < 0.0 || jb > g.extent_b - 1 || g.owner(a, jb) != line) continue;
         const GridPoint q = point(a, jb);
-        visit(static_cast<int>(q.x), static_cast<int>(q.y));
+        if (observer_step == 1 ||
+            (observer_columns.coarse(static_cast<int>(q.x)) && observer_rows.coarse(static_cast<int>(q.y))))
+          visit(static_cast<int>(q.x), static_cast<int>(q.y));
         if (!stretched_rows) break;  // one texel at most
       }
     };

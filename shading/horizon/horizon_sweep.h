@@ -138,9 +138,12 @@ double sweep_window_steps(const terrain::HeightField& field, const SweepGeometry
 // beside them (an O(1) running maximum per sample), then runs the hull for the observers
 // it could not settle and the samples within reach of their floor lines alone; elsewhere
 // the floor changes nothing.
+// `observer_step` s > 1 (a sub-sampled field's, horizon_subsample.h): only the coarse
+// texels get codes, the same as with s = 1; the others are left kFarCodeNone.
 std::vector<std::uint16_t> sweep_far_slopes(const terrain::HeightField& field, Heading u, const MarchOptions& options,
                                             unsigned threads = 1,
-                                            double floor_slope = -std::numeric_limits<double>::infinity());
+                                            double floor_slope = -std::numeric_limits<double>::infinity(),
+                                            int observer_step = 1);
 
 // Raw horizon (rad) of texel (i, j): the near steps of its own ray and its far slope
 // (code from sweep_far_slopes); −∞ if the first step already leaves the grid. Equals

@@ -1321,14 +1321,11 @@ shading::ProductBands GpuProductPipeline::run(const terrain::HeightField& field,
     GpuTimer sweep_timer;
     {
       ScopedGpuTimer timing(sweep_timer);
-      if (s == 1) {
-        sweep_pass(k.sweep_kernel(mOptions, false), field, mOptions.march, k.band_headings, far, k.sweep_textures);
-      } else {  // the coarse texels the region's texels mix
-        horizon::MarchOptions o = mOptions.march;
-        o.region = horizon::subsample_region(field, o.region, s);
-        sweep_pass(k.sweep_kernel(mOptions, false), field, o, k.band_headings, far, k.sweep_textures,
-                   -std::numeric_limits<double>::infinity(), s);
-      }
+      // Sub-sampled: the coarse texels alone, those the region's texels mix.
+      horizon::MarchOptions o = mOptions.march;
+      o.region = horizon::subsample_region(field, o.region, s);
+      sweep_pass(k.sweep_kernel(mOptions, false), field, o, k.band_headings, far, k.sweep_textures,
+                 -std::numeric_limits<double>::infinity(), s);
     }
     t.march_ms += sweep_timer.elapsed_ms();
     glFinish();  // wall clock too: llvmpipe's timer queries report ~0 for compute

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -128,6 +130,54 @@ TileRange tiles_covering(const LonLatBox& box, int z) {
   return tiles_covering(MercatorBox{sw.x, sw.y, ne.x, ne.y}, z);
 }
 
+namespace {
+
+std::string degrees_east_west(double lon) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f° %s", std::abs(lon), lon < 0.0 ? "W" : "E");
+  return text;
+}
+
+// The tile grid spans −180…180° once and does not wrap, so a DEM must lie within it. It
+// crosses the antimeridian where its outline does (two samples along one edge, taken in
+// −180…180°, more than 180° apart) or, in degrees, where its longitudes run over ±180°;
+// one wholly past ±180° is off the grid too (the warper looks pixels up at −180…180°).
+// `outline` holds the edges' samples interleaved, four per step (dem_lon_lat_bounds).
+void check_within_one_world(const HeightField& dem, const std::vector<LatLon>& outline) {
+  bool crosses = false;
+  for (std::size_t k = 4; k < outline.size(); ++k)
+    crosses = crosses || std::abs(outline[k].longitude_deg - outline[k - 4].longitude_deg) > 180.0;
+  double low = std::numeric_limits<double>::infinity(), high = -low;  // degrees as stored
+  constexpr double kSlack = 1e-9;
+  if (dem.georef.geographic) {
+    const auto& gt = dem.georef.geotransform;
+    for (const double c : {0.0, double(dem.width)})
+      for (const double r : {0.0, double(dem.height)}) {
+        const double lon = gt[0] + c * gt[1] + r * gt[2];
+        low = std::min(low, lon), high = std::max(high, lon);
+      }
+    crosses = crosses || (low < 180.0 - kSlack && high > 180.0 + kSlack) || (low < -180.0 - kSlack && high > -180.0 + kSlack);
+  }
+  if (crosses) {
+    double west = 360.0, east = 0.0;  // in 0…360°, where the outline is in one piece
+    for (const LatLon& p : outline) {
+      const double lon = p.longitude_deg < 0.0 ? p.longitude_deg + 360.0 : p.longitude_deg;
+      west = std::min(west, lon), east = std::max(east, lon);
+    }
+    throw DemError("the DEM crosses the antimeridian (" + degrees_east_west(west) + " to " +
+                   degrees_east_west(east - 360.0) +
+                   "), where the web-map tile grid does not wrap: split it at 180° and tile each part");
+  }
+  if (low < -180.0 - kSlack || high > 180.0 + kSlack) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3f° … %.3f°", low, high);
+    throw DemError(std::string("the DEM's longitudes run past ±180° (") + text +
+                   "), off the web-map tile grid: shift its georeferencing by 360° into −180…180° first");
+  }
+}
+
+}  // namespace
+
 LonLatBox dem_lon_lat_bounds(const HeightField& dem) {
   std::vector<PixelPoint> edge;
   for (int k = 0; k <= kGridEdgeSamples; ++k) {
@@ -139,6 +189,7 @@ LonLatBox dem_lon_lat_bounds(const HeightField& dem) {
   if (!points)
     throw DemError("the DEM has no " + std::string(dem.georef.crs_wkt.empty() ? "CRS" : "geotransform") +
                    ", so it cannot be placed on the web-map tile grid");
+  check_within_one_world(dem, *points);
   LonLatBox box{180.0, 90.0, -180.0, -90.0};
   for (const LatLon& p : *points) {
     box.west = std::min(box.west, p.longitude_deg);

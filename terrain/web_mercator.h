@@ -97,9 +97,9 @@ TileRange tiles_covering(const LonLatBox& box, int z);  // latitudes clamped
 
 // The DEM's extent on the tile grid: its pixel edges (kGridEdgeSamples points per
 // edge, so a projected DEM's curved 3857 outline is bounded within metres) through its
-// CRS to WGS 84, as a WGS 84 and a 3857 box. A DEM across the antimeridian is not
-// handled (its box would span the world). Throws DemError when the DEM has no CRS or
-// geotransform.
+// CRS to WGS 84, as a WGS 84 and a 3857 box. The grid does not wrap: throws DemError
+// for a DEM across the antimeridian or, in degrees, past ±180°, and for one without a
+// CRS or geotransform.
 inline constexpr int kGridEdgeSamples = 64;
 LonLatBox dem_lon_lat_bounds(const HeightField& dem);
 MercatorBox dem_mercator_bounds(const HeightField& dem);

@@ -7,6 +7,7 @@
 #include "terrain_test_util.h"
 
 #include <gdal_priv.h>
+#include <ogr_spatialref.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
@@ -529,13 +530,19 @@ TEST(TilePlan, FewestEvenBlocksCoverTheTilesAndShardsPartitionByCost) {
   EXPECT_EQ(at::parse_shard("2/5").index, 2);
 }
 
-// DEM without a CRS: the crop's heights and geotransform, no spatial reference.
-std::string write_dem_without_crs(const ScratchDir& dir) {
+// A flat 32 × 32 DEM at `gt`, in EPSG `epsg` (0: without a spatial reference).
+std::string write_small_dem(const ScratchDir& dir, const std::string& name, int epsg, const std::array<double, 6>& gt) {
   GDALAllRegister();
-  const std::string path = dir.file("nocrs.tif");
+  const std::string path = dir.file(name);
   GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 32, 32, 1, GDT_Float32, nullptr);
-  double gt[6] = {380000, 30, 0, 3800000, 0, -30};
-  ds->SetGeoTransform(gt);
+  double t[6];
+  std::copy(gt.begin(), gt.end(), t);
+  ds->SetGeoTransform(t);
+  if (epsg != 0) {
+    OGRSpatialReference srs;
+    srs.importFromEPSG(epsg);
+    ds->SetSpatialRef(&srs);
+  }
   std::vector<float> h(32 * 32, 500.0f);
   EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, 32, 32, h.data(), 32, 32, GDT_Float32, 0, 0, nullptr), CE_None);
   GDALClose(GDALDataset::ToHandle(ds));
@@ -565,7 +572,8 @@ TEST_F(Tiles, AZoomRangeOverMaxTilesIsRefusedWithItsCount) {
 
 TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
   ScratchDir out;
-  const std::string nocrs = write_dem_without_crs(out);
+  const std::string nocrs = write_small_dem(out, "nocrs.tif", 0, {380000, 30, 0, 3800000, 0, -30});
+  const std::string dateline = write_small_dem(out, "dateline.tif", 4326, {179.95, 0.003, 0, 10.0, 0, -0.003});
   fs::create_directories(out.file("exists"));
   const auto before = out.listing();
   const std::vector<std::pair<std::string, std::string>> cases{
@@ -578,6 +586,7 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
       {dem() + " -o " + out.file("t.pmtiles") + " --shard 0/0", "--shard '0/0'"},
       {dem() + " -o " + out.file("t.pmtiles") + " --shard a/b", "--shard 'a/b'"},
       {nocrs + " -o " + out.file("t.pmtiles"), "no CRS, so it cannot be warped to web-map tiles"},
+      {dateline + " -o " + out.file("t.pmtiles"), "crosses the antimeridian (179.950° E to 179.954° W)"},
       {dem() + " -o " + out.file("t.pmtiles") + " --zoom 10 --shard 2/2", "nothing to render"},
       {dem() + " -o " + out.file("t.pmtiles") + " --format gif", "png, webp or jpeg"},
       {dem() + " -o " + out.file("t.mbtiles") + " --tms", "--tms"},

@@ -229,5 +229,50 @@ TEST(WebMercator, NativeZoomRule) {
   }
 }
 
+// The tile grid spans −180…180° once: a DEM beside the antimeridian keeps its box, one
+// across it (in degrees or projected) or past ±180° gets one line, and a DEM of the whole
+// world spans the grid.
+TEST(WebMercator, DemBoundsStayWithinOneWorld) {
+  auto geographic = [](double west, double north, double step, int width, int height) {
+    HeightField f(width, height, 1000.0);
+    f.georef = skylit::terrain::testing::epsg_georef(4326, {west, step, 0, north, 0, -step});
+    f.georef.geographic = true;
+    return f;
+  };
+  auto error_of = [](const HeightField& f) {
+    try {
+      dem_lon_lat_bounds(f);
+    } catch (const DemError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const LonLatBox east = dem_lon_lat_bounds(geographic(179.0, 10.0, 0.1, 9, 4));  // 179.0° … 179.9° E
+  EXPECT_NEAR(east.west, 179.0, 1e-9);
+  EXPECT_NEAR(east.east, 179.9, 1e-9);
+  const LonLatBox west = dem_lon_lat_bounds(geographic(-179.9, 10.0, 0.1, 9, 4));  // 179.9° … 179.0° W
+  EXPECT_NEAR(west.west, -179.9, 1e-9);
+  EXPECT_NEAR(west.east, -179.0, 1e-9);
+  const LonLatBox world = dem_lon_lat_bounds(geographic(-180.0, 80.0, 10.0, 36, 16));
+  EXPECT_NEAR(world.west, -180.0, 1e-9);
+  EXPECT_NEAR(world.east, 180.0, 1e-9);
+
+  std::string m = error_of(geographic(179.9, 10.0, 0.05, 4, 4));  // 179.9° E … 180.1° = 179.9° W
+  EXPECT_NE(m.find("crosses the antimeridian (179.900° E to 179.900° W)"), std::string::npos) << m;
+  m = error_of(geographic(180.5, 10.0, 0.1, 4, 4));  // wholly past 180°, left as stored
+  EXPECT_NE(m.find("run past ±180° (180.500° … 180.900°)"), std::string::npos) << m;
+  m = error_of(geographic(-181.0, 10.0, 0.1, 4, 4));
+  EXPECT_NE(m.find("run past ±180° (-181.000° … -180.600°)"), std::string::npos) << m;
+  // UTM zone 1 N (central meridian 177° W): at 45° N, 3° west of it lies ≈ 236 km west of
+  // the false easting, so eastings 262–266 km straddle 180°.
+  HeightField utm(64, 64, 60.0);
+  utm.georef = skylit::terrain::testing::epsg_georef(32601, {262000, 60, 0, 5003840, 0, -60});
+  m = error_of(utm);
+  EXPECT_NE(m.find("crosses the antimeridian"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  utm.georef = skylit::terrain::testing::epsg_georef(32601, {500000, 60, 0, 5003840, 0, -60});  // at 177° W
+  EXPECT_EQ(error_of(utm), "no exception");
+}
+
 }  // namespace
 }  // namespace skylit::terrain

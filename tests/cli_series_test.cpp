@@ -162,6 +162,27 @@ TEST(CliSeries, SumsOverADayAreTheFramesSums) {
     }
 }
 
+// A polar night has no sunrise (at 80° N on 21 December the sun culminates at
+// 90° − 80° − 23.44° = −13.4°): a day's sums are 0 everywhere, and the run says why
+// without reporting frames it never computed.
+TEST(CliSeries, APolarNightSumsToZeroAndSaysSo) {
+  terrain::testing::ScratchDir dir;
+  const std::string dem = dir.file("scene.tif");
+  ASSERT_EQ(run_skylit("scene --size 16 -o " + dem).status, 0);
+  for (const std::string product : {"insolation", "sun-hours"}) {
+    const std::string out = dir.file(product + ".tif");
+    const auto r = run_skylit("shade " + dem + " -p " + product + " --time 2026-12-21 --lat 80 --lon 10 -o " + out, true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("note: polar night on 2026-12-21"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("times from"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("computed"), std::string::npos) << r.out;
+    const OutputRaster v = read_output(out);
+    ASSERT_EQ(v.bands, 1);
+    for (int j = 0; j < v.h; ++j)
+      for (int i = 0; i < v.w; ++i) ASSERT_EQ(v.at(0, i, j), 0.0f) << product << " at " << i << "," << j;
+  }
+}
+
 TEST(CliSeries, BadSeriesGetOneClearLineAndNoFile) {
   terrain::testing::ScratchDir dir;
   const std::string dem = dir.file("scene.tif");

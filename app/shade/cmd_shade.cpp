@@ -260,10 +260,9 @@ int run_shade_series(const ShadeArgs& a, const shading::TimeSpec& times, shading
                                         static_cast<int>(job.instants.size()), field.size() * bands * sizeof(float),
                                         kMaxSeriesFileBytes);
   }
-  if (!a.quiet)
-    std::cerr << "skylit: " << job.instants.size() << " times from "
-              << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.front())) << " to "
-              << (job.instants.empty() ? std::string("-") : sky::format_utc_time(job.instants.back())) << "\n";
+  if (!a.quiet && !job.instants.empty())  // none: a polar night's sum, whose note said so
+    std::cerr << "skylit: " << job.instants.size() << " times from " << sky::format_utc_time(job.instants.front())
+              << " to " << sky::format_utc_time(job.instants.back()) << "\n";
   shading::ProductOptions frame_opt = opt;
   frame_opt.lighting = shading::Lighting{};  // lit: the renderer's check sees a lit product
   if (const auto why = renderer.lacks(product, frame_opt))

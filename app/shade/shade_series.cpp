@@ -112,8 +112,9 @@ void run_series(shading::Renderer& renderer, const terrain::HeightField& field, 
   }
   if (job.timings) print_frame_times(frame_ms, sun_far_kept);
   if (job.quiet) return;
-  std::cerr << "skylit: computed " << frame_ms.size() << " frame" << (frame_ms.size() == 1 ? "" : "s") << " on "
-            << renderer.description() << "\n";
+  if (!frame_ms.empty())
+    std::cerr << "skylit: computed " << frame_ms.size() << " frame" << (frame_ms.size() == 1 ? "" : "s") << " on "
+              << renderer.description() << "\n";
   if (night > 0)
     std::cerr << "skylit: note: the sun is below the horizon at " << night << " of " << n << " times ("
               << (shading::traits(job.product).sun_only ? "shadow 0 there" : "sky light only there") << ")\n";

@@ -102,7 +102,7 @@ std::vector<std::string> WarpSettings::arguments() const {
 }
 
 struct TileWindowSource::Impl {
-  explicit Impl(StagedDem staged) : dem(std::move(staged)), to_dem(dem.outline().georef) {}
+  explicit Impl(StagedDem staged) : dem(std::move(staged)), to_dem(dem.outline()) {}
   void warp_into(GDALDataset& out, long long gx0, long long gy0, long long w, long long h, const WarpSettings& s,
                  int zoom, int tile_size) const;
 
@@ -222,7 +222,10 @@ WarpSettings TileWindowSource::warp_settings(int zoom, const TileWindowOptions& 
 TileWindow TileWindowSource::window(const TileRange& tiles, const TileWindowOptions& options) const {
   const int n_side = tiles_per_side(tiles.z);
   const double p = pixel_size(tiles.z, options.tile_size);
-  if (tiles.empty() || tiles.x0 < 0 || tiles.y0 < 0 || tiles.x1 >= n_side || tiles.y1 >= n_side)
+  // Columns past the world's east edge (to 2^z·2 − 1) are the next copy of it, where a
+  // DEM across the antimeridian continues (tiles_covering).
+  if (tiles.empty() || tiles.x0 < 0 || tiles.y0 < 0 || tiles.x0 >= n_side || tiles.x1 >= 2 * n_side ||
+      tiles.columns() > n_side || tiles.y1 >= n_side)
     throw std::invalid_argument("tile range " + std::to_string(tiles.x0) + "…" + std::to_string(tiles.x1) + " × " +
                    std::to_string(tiles.y0) + "…" + std::to_string(tiles.y1) + " is empty or outside zoom " +
                    std::to_string(tiles.z) + " (0…" + std::to_string(n_side - 1) + ")");

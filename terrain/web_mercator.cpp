@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -88,6 +87,11 @@ LatLon mercator_to_lon_lat(double x, double y) {
   return {std::atan(std::sinh(y / kWebMercatorRadius)) / kDegToRad, x / kWebMercatorRadius / kDegToRad};
 }
 
+TileId wrap_tile(const TileId& t) {
+  const int n = tiles_per_side(t.z);
+  return {t.z, ((t.x % n) + n) % n, t.y};
+}
+
 MercatorBox tile_bounds(const TileId& t) {
   check_tile(t);
   const double span = tile_span(t.z), s = kWebMercatorOriginShift;
@@ -112,14 +116,19 @@ TileRange tiles_covering(const MercatorBox& box, int z) {
   const double span = tile_span(z), s = kWebMercatorOriginShift;
   TileRange r;
   r.z = z;
-  const double xmin = std::max(box.xmin, -s), xmax = std::min(box.xmax, s);
+  // A box from inside the world across its east edge goes on into the next copy of it
+  // (a DEM across the antimeridian): at most one world wide, columns up to 2n − 1.
+  const double xmin = std::max(box.xmin, -s);
+  const bool wraps = box.xmin < s && box.xmax > s;
+  const double xmax = std::min(box.xmax, wraps ? xmin + 2.0 * s : s);
   const double ymin = std::max(box.ymin, -s), ymax = std::min(box.ymax, s);
   if (!(xmin <= xmax && ymin <= ymax)) return r;  // outside the world (or NaN): empty
   // Tile columns: first holding xmin, last whose west edge is below xmax (half-open).
   const double fx0 = in_tiles(xmin + s, span), fx1 = in_tiles(xmax + s, span);
   const double fy0 = in_tiles(s - ymax, span), fy1 = in_tiles(s - ymin, span);
   r.x0 = clamp_index(std::floor(fx0), n);
-  r.x1 = std::max(r.x0, clamp_index(std::ceil(fx1) - 1.0, n));
+  r.x1 = std::max(r.x0, wraps ? std::min(static_cast<int>(std::ceil(fx1)) - 1, r.x0 + n - 1)
+                              : clamp_index(std::ceil(fx1) - 1.0, n));
   r.y0 = clamp_index(std::floor(fy0), n);
   r.y1 = std::max(r.y0, clamp_index(std::ceil(fy1) - 1.0, n));
   return r;
@@ -132,48 +141,23 @@ TileRange tiles_covering(const LonLatBox& box, int z) {
 
 namespace {
 
-std::string degrees_east_west(double lon) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f° %s", std::abs(lon), lon < 0.0 ? "W" : "E");
-  return text;
-}
-
-// The tile grid spans −180…180° once and does not wrap, so a DEM must lie within it. It
-// crosses the antimeridian where its outline does (two samples along one edge, taken in
-// −180…180°, more than 180° apart) or, in degrees, where its longitudes run over ±180°;
-// one wholly past ±180° is off the grid too (the warper looks pixels up at −180…180°).
-// `outline` holds the edges' samples interleaved, four per step (dem_lon_lat_bounds).
-void check_within_one_world(const HeightField& dem, const std::vector<LatLon>& outline) {
-  bool crosses = false;
+// Whether the DEM's outline straddles the antimeridian: two samples along one edge,
+// taken in −180…180°, more than 180° apart (`outline` holds the edges' samples
+// interleaved, four per step, as dem_lon_lat_bounds makes them), or, in degrees,
+// longitudes stored on both sides of ±180°.
+bool crosses_antimeridian(const HeightField& dem, const std::vector<LatLon>& outline) {
   for (std::size_t k = 4; k < outline.size(); ++k)
-    crosses = crosses || std::abs(outline[k].longitude_deg - outline[k - 4].longitude_deg) > 180.0;
-  double low = std::numeric_limits<double>::infinity(), high = -low;  // degrees as stored
-  constexpr double kSlack = 1e-9;
-  if (dem.georef.geographic) {
-    const auto& gt = dem.georef.geotransform;
-    for (const double c : {0.0, double(dem.width)})
-      for (const double r : {0.0, double(dem.height)}) {
-        const double lon = gt[0] + c * gt[1] + r * gt[2];
-        low = std::min(low, lon), high = std::max(high, lon);
-      }
-    crosses = crosses || (low < 180.0 - kSlack && high > 180.0 + kSlack) || (low < -180.0 - kSlack && high > -180.0 + kSlack);
-  }
-  if (crosses) {
-    double west = 360.0, east = 0.0;  // in 0…360°, where the outline is in one piece
-    for (const LatLon& p : outline) {
-      const double lon = p.longitude_deg < 0.0 ? p.longitude_deg + 360.0 : p.longitude_deg;
-      west = std::min(west, lon), east = std::max(east, lon);
+    if (std::abs(outline[k].longitude_deg - outline[k - 4].longitude_deg) > 180.0) return true;
+  if (!dem.georef.geographic) return false;
+  const auto& gt = dem.georef.geotransform;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const double c : {0.0, double(dem.width)})
+    for (const double r : {0.0, double(dem.height)}) {
+      const double lon = gt[0] + c * gt[1] + r * gt[2];
+      low = std::min(low, lon), high = std::max(high, lon);
     }
-    throw DemError("the DEM crosses the antimeridian (" + degrees_east_west(west) + " to " +
-                   degrees_east_west(east - 360.0) +
-                   "), where the web-map tile grid does not wrap: split it at 180° and tile each part");
-  }
-  if (low < -180.0 - kSlack || high > 180.0 + kSlack) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.3f° … %.3f°", low, high);
-    throw DemError(std::string("the DEM's longitudes run past ±180° (") + text +
-                   "), off the web-map tile grid: shift its georeferencing by 360° into −180…180° first");
-  }
+  constexpr double kSlack = 1e-9;
+  return (low < 180.0 - kSlack && high > 180.0 + kSlack) || (low < -180.0 - kSlack && high > -180.0 + kSlack);
 }
 
 }  // namespace
@@ -189,14 +173,17 @@ LonLatBox dem_lon_lat_bounds(const HeightField& dem) {
   if (!points)
     throw DemError("the DEM has no " + std::string(dem.georef.crs_wkt.empty() ? "CRS" : "geotransform") +
                    ", so it cannot be placed on the web-map tile grid");
-  check_within_one_world(dem, *points);
-  LonLatBox box{180.0, 90.0, -180.0, -90.0};
+  // Across the antimeridian the outline is in one piece in 0…360°: east then runs past 180°.
+  const bool crosses = crosses_antimeridian(dem, *points);
+  LonLatBox box{360.0, 90.0, -180.0, -90.0};
   for (const LatLon& p : *points) {
-    box.west = std::min(box.west, p.longitude_deg);
-    box.east = std::max(box.east, p.longitude_deg);
+    const double lon = crosses && p.longitude_deg < 0.0 ? p.longitude_deg + 360.0 : p.longitude_deg;
+    box.west = std::min(box.west, lon);
+    box.east = std::max(box.east, lon);
     box.south = std::min(box.south, p.latitude_deg);
     box.north = std::max(box.north, p.latitude_deg);
   }
+  if (box.west >= 180.0) box.west -= 360.0, box.east -= 360.0;
   return box;
 }
 

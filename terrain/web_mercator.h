@@ -83,6 +83,9 @@ double clamp_latitude(double latitude_deg);
 MercatorPoint lon_lat_to_mercator(double lon_deg, double lat_deg);
 LatLon mercator_to_lon_lat(double x, double y);
 
+// The tile a column of the world's next copy (x ≥ 2^z) or previous one stands for.
+TileId wrap_tile(const TileId& t);
+
 MercatorBox tile_bounds(const TileId& t);
 LonLatBox tile_lon_lat_bounds(const TileId& t);
 
@@ -91,15 +94,19 @@ LonLatBox tile_lon_lat_bounds(const TileId& t);
 TileId tile_at(double lon_deg, double lat_deg, int z);
 
 // Tiles overlapping a box with positive area (touching an edge does not count; a
-// zero-width box still selects the tile it lies in), clipped to the world.
+// zero-width box still selects the tile it lies in), clipped to the world. A box that
+// starts inside the world and runs past its east edge (a DEM across the antimeridian,
+// dem_mercator_bounds) goes on into the world's next copy: columns x ≥ 2^z, at most 2^z
+// of them in all, which wrap_tile folds back.
 TileRange tiles_covering(const MercatorBox& box, int z);
 TileRange tiles_covering(const LonLatBox& box, int z);  // latitudes clamped
 
 // The DEM's extent on the tile grid: its pixel edges (kGridEdgeSamples points per
 // edge, so a projected DEM's curved 3857 outline is bounded within metres) through its
-// CRS to WGS 84, as a WGS 84 and a 3857 box. The grid does not wrap: throws DemError
-// for a DEM across the antimeridian or, in degrees, past ±180°, and for one without a
-// CRS or geotransform.
+// CRS to WGS 84, as a WGS 84 and a 3857 box. West lies in −180…180°; for a DEM across
+// the antimeridian east runs on past 180° (east − 360° in −180…180°), and the 3857
+// box past the world's east edge. Throws DemError when the DEM has no CRS or
+// geotransform.
 inline constexpr int kGridEdgeSamples = 64;
 LonLatBox dem_lon_lat_bounds(const HeightField& dem);
 MercatorBox dem_mercator_bounds(const HeightField& dem);

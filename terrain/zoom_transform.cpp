@@ -15,9 +15,13 @@ namespace skylit::terrain {
 struct MercatorToDem::Impl {
   std::unique_ptr<OGRCoordinateTransformation> forward, inverse;
   std::array<double, 6> gt{}, inv_gt{};
+  bool geographic = false;
+  double centre_longitude = 0.0;  // degrees as the DEM stores them (geographic DEMs)
+  double centre_x = 0.0;          // 3857 metres of the DEM's centre, on its side of the antimeridian
 };
 
-MercatorToDem::MercatorToDem(const GeoReference& dem) : impl_(std::make_unique<Impl>()) {
+MercatorToDem::MercatorToDem(const HeightField& field) : impl_(std::make_unique<Impl>()) {
+  const GeoReference& dem = field.georef;
   if (dem.crs_wkt.empty() || !dem.has_geotransform)
     throw DemError("the DEM has no CRS or geotransform, so EPSG:3857 pixels cannot be placed on it");
   OGRSpatialReference mercator, source;
@@ -32,6 +36,11 @@ MercatorToDem::MercatorToDem(const GeoReference& dem) : impl_(std::make_unique<I
   impl_->gt = dem.geotransform;
   if (!GDALInvGeoTransform(impl_->gt.data(), impl_->inv_gt.data()))
     throw DemError("the DEM's geotransform cannot be inverted");
+  const auto& g = impl_->gt;
+  impl_->geographic = dem.geographic;
+  impl_->centre_longitude = g[0] + 0.5 * field.width * g[1] + 0.5 * field.height * g[2];
+  const LonLatBox box = dem_lon_lat_bounds(field);
+  impl_->centre_x = lon_lat_to_mercator(0.5 * (box.west + box.east), 0.0).x;
 }
 
 MercatorToDem::~MercatorToDem() = default;
@@ -43,6 +52,8 @@ void MercatorToDem::to_source(std::size_t n, double* x, double* y, int* ok) cons
   if (!impl_->forward->Transform(n, x, y, nullptr, ok)) std::fill(ok, ok + n, 0);
   const auto& g = impl_->inv_gt;
   for (std::size_t k = 0; k < n; ++k) {
+    // PROJ returns longitudes in −180…180°; a DEM in degrees may store them past 180°.
+    if (impl_->geographic) x[k] += 360.0 * std::round((impl_->centre_longitude - x[k]) / 360.0);
     const double gx = x[k], gy = y[k];
     x[k] = g[0] + gx * g[1] + gy * g[2];
     y[k] = g[3] + gx * g[4] + gy * g[5];
@@ -58,6 +69,8 @@ void MercatorToDem::to_mercator(std::size_t n, double* x, double* y, int* ok) co
     y[k] = g[3] + px * g[4] + py * g[5];
   }
   if (!impl_->inverse->Transform(n, x, y, nullptr, ok)) std::fill(ok, ok + n, 0);
+  const double world = 2.0 * kWebMercatorOriginShift;
+  for (std::size_t k = 0; k < n; ++k) x[k] += world * std::round((impl_->centre_x - x[k]) / world);
 }
 
 Curvature MercatorToDem::curvature(const MercatorBox& box) const {

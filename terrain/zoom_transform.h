@@ -51,7 +51,11 @@ struct Curvature {
 class MercatorToDem {
  public:
   // Throws DemError if the DEM's CRS is missing or PROJ has no path from EPSG:3857.
-  explicit MercatorToDem(const GeoReference& dem);
+  // Longitudes wrap toward the DEM: a point reaches a DEM in degrees at the longitude
+  // the DEM stores (e.g. 180.5° E, not −179.5°), and 3857 results lie within half a
+  // world of the DEM's centre (dem_mercator_bounds: past the east edge for a DEM across
+  // the antimeridian).
+  explicit MercatorToDem(const HeightField& dem);
   ~MercatorToDem();
   MercatorToDem(MercatorToDem&&) noexcept;
   MercatorToDem& operator=(MercatorToDem&&) noexcept;

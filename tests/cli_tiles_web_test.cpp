@@ -124,6 +124,36 @@ TEST_F(TilesWeb, LeafletPageShowsTheTilesInChromium) {
   }
 }
 
+// A DEM across the antimeridian (the synthetic scene at 179.85° E … 179.85° W): the page
+// frames it and shows the tiles of both sides, those past 180° read from the world's
+// first columns, as the archive holds them.
+TEST_F(TilesWeb, LeafletPageShowsBothSidesOfTheAntimeridian) {
+  REQUIRE_WEB();
+  const std::string scene = dir_.file("scene.tif"), dem = dir_.file("dateline.tif");
+  ASSERT_EQ(run_skylit("scene --size 256 -o " + scene).status, 0);
+  ASSERT_EQ(std::system(("gdal_translate -q -a_srs EPSG:4326 -a_ullr 179.85 -17.8 180.15 -18.1 " + scene + " " + dem).c_str()), 0);
+  for (const std::string out : {"d.pmtiles", "dxyz"}) {
+    const auto r = run_skylit("tiles " + dem + " -o " + dir_.file(out) + " --zoom 10-11 -p hillshade -q -w leaflet", true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::string root = out == "dxyz" ? dir_.file("dxyz") : dir_.path().string();
+    int status = 0;
+    const std::string text = capture("node " + kWeb + "/viewer_test.mjs " + root + " index.html " + dir_.file(out + ".png"), status);
+    EXPECT_EQ(status, 0) << out << ": " << text;
+    ASSERT_FALSE(text.empty()) << out;
+    const nlohmann::json j = nlohmann::json::parse(text);
+    EXPECT_EQ(j["zoom"], 11) << out;
+    EXPECT_EQ(j["mismatched"], 0) << out;
+    int west = 0, east = 0;  // Leaflet's columns: 2047 left of 180°, 2048 (the archive's 0) right of it
+    for (const auto& key : j["keys"]) {
+      const std::string k = key.get<std::string>();
+      west += k.rfind("11/2047/", 0) == 0;
+      east += k.rfind("11/2048/", 0) == 0;
+    }
+    EXPECT_GE(west, 1) << out << ": " << text;
+    EXPECT_GE(east, 1) << out << ": " << text;
+  }
+}
+
 TEST_F(TilesWeb, LeafletWithMbtilesFailsCleanly) {
   const auto before = dir_.listing();
   const auto r = run_skylit("tiles " + crop_ + " -o " + dir_.file("t.mbtiles") + flags_ + " -w leaflet", true);

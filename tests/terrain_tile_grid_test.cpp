@@ -229,49 +229,52 @@ TEST(WebMercator, NativeZoomRule) {
   }
 }
 
-// The tile grid spans −180…180° once: a DEM beside the antimeridian keeps its box, one
-// across it (in degrees or projected) or past ±180° gets one line, and a DEM of the whole
-// world spans the grid.
-TEST(WebMercator, DemBoundsStayWithinOneWorld) {
+// The DEM's box: beside the antimeridian as it lies; across it (in degrees or projected)
+// west in −180…180° and east past 180°, where tiles_covering goes on into the next
+// copy of the world and wrap_tile folds the columns back; stored past ±180°, moved
+// into −180…180°; the whole world spans the grid once.
+TEST(WebMercator, DemBoundsAcrossTheAntimeridianRunPast180) {
   auto geographic = [](double west, double north, double step, int width, int height) {
     HeightField f(width, height, 1000.0);
     f.georef = skylit::terrain::testing::epsg_georef(4326, {west, step, 0, north, 0, -step});
     f.georef.geographic = true;
     return f;
   };
-  auto error_of = [](const HeightField& f) {
-    try {
-      dem_lon_lat_bounds(f);
-    } catch (const DemError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
+  auto expect_box = [](const LonLatBox& b, double west, double east) {
+    EXPECT_NEAR(b.west, west, 1e-9);
+    EXPECT_NEAR(b.east, east, 1e-9);
   };
-  const LonLatBox east = dem_lon_lat_bounds(geographic(179.0, 10.0, 0.1, 9, 4));  // 179.0° … 179.9° E
-  EXPECT_NEAR(east.west, 179.0, 1e-9);
-  EXPECT_NEAR(east.east, 179.9, 1e-9);
-  const LonLatBox west = dem_lon_lat_bounds(geographic(-179.9, 10.0, 0.1, 9, 4));  // 179.9° … 179.0° W
-  EXPECT_NEAR(west.west, -179.9, 1e-9);
-  EXPECT_NEAR(west.east, -179.0, 1e-9);
-  const LonLatBox world = dem_lon_lat_bounds(geographic(-180.0, 80.0, 10.0, 36, 16));
-  EXPECT_NEAR(world.west, -180.0, 1e-9);
-  EXPECT_NEAR(world.east, 180.0, 1e-9);
+  expect_box(dem_lon_lat_bounds(geographic(179.0, 10.0, 0.1, 9, 4)), 179.0, 179.9);
+  expect_box(dem_lon_lat_bounds(geographic(-179.9, 10.0, 0.1, 9, 4)), -179.9, -179.0);
+  expect_box(dem_lon_lat_bounds(geographic(-180.0, 80.0, 10.0, 36, 16)), -180.0, 180.0);
+  expect_box(dem_lon_lat_bounds(geographic(179.9, 10.0, 0.05, 4, 4)), 179.9, 180.1);   // stored across 180°
+  expect_box(dem_lon_lat_bounds(geographic(-180.1, 10.0, 0.05, 4, 4)), 179.9, 180.1);  // stored across −180°
+  expect_box(dem_lon_lat_bounds(geographic(180.5, 10.0, 0.1, 4, 4)), -179.5, -179.1);  // stored past 180°
+  expect_box(dem_lon_lat_bounds(geographic(-181.0, 10.0, 0.1, 4, 4)), 179.0, 179.4);
 
-  std::string m = error_of(geographic(179.9, 10.0, 0.05, 4, 4));  // 179.9° E … 180.1° = 179.9° W
-  EXPECT_NE(m.find("crosses the antimeridian (179.900° E to 179.900° W)"), std::string::npos) << m;
-  m = error_of(geographic(180.5, 10.0, 0.1, 4, 4));  // wholly past 180°, left as stored
-  EXPECT_NE(m.find("run past ±180° (180.500° … 180.900°)"), std::string::npos) << m;
-  m = error_of(geographic(-181.0, 10.0, 0.1, 4, 4));
-  EXPECT_NE(m.find("run past ±180° (-181.000° … -180.600°)"), std::string::npos) << m;
   // UTM zone 1 N (central meridian 177° W): at 45° N, 3° west of it lies ≈ 236 km west of
-  // the false easting, so eastings 262–266 km straddle 180°.
+  // the false easting, so eastings 262–266 km straddle 180°; at the false easting, 177° W.
   HeightField utm(64, 64, 60.0);
   utm.georef = skylit::terrain::testing::epsg_georef(32601, {262000, 60, 0, 5003840, 0, -60});
-  m = error_of(utm);
-  EXPECT_NE(m.find("crosses the antimeridian"), std::string::npos) << m;
-  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-  utm.georef = skylit::terrain::testing::epsg_georef(32601, {500000, 60, 0, 5003840, 0, -60});  // at 177° W
-  EXPECT_EQ(error_of(utm), "no exception");
+  const LonLatBox across = dem_lon_lat_bounds(utm);
+  EXPECT_LT(across.west, 180.0);
+  EXPECT_GT(across.east, 180.0);
+  EXPECT_LT(across.east - across.west, 0.1);
+  utm.georef = skylit::terrain::testing::epsg_georef(32601, {500000, 60, 0, 5003840, 0, -60});
+  const LonLatBox at_cm = dem_lon_lat_bounds(utm);
+  // Its centre, 1.92 km east of 177° W: 1.92 / (111.32 · cos 45°) = 0.0244°.
+  EXPECT_NEAR(0.5 * (at_cm.west + at_cm.east), -177.0 + 0.0244, 0.005);
+
+  // z 3: 179.9° E is in column 7, 179.9° W (180.1°) in column 0 of the next world, 8.
+  const HeightField crossing = geographic(179.9, 10.0, 0.05, 4, 4);
+  const TileRange r = tiles_covering(dem_mercator_bounds(crossing), 3);
+  EXPECT_EQ(r.x0, 7);
+  EXPECT_EQ(r.x1, 8);
+  EXPECT_EQ(wrap_tile({3, 8, r.y0}), (TileId{3, 0, r.y0}));
+  EXPECT_EQ(wrap_tile({3, 7, r.y0}), (TileId{3, 7, r.y0}));
+  // Never more than one world of columns, whatever the box.
+  const TileRange wide = tiles_covering(MercatorBox{-1e7, 0, 5e7, 1}, 2);
+  EXPECT_EQ(wide.columns(), 4);
 }
 
 }  // namespace

@@ -45,10 +45,11 @@ struct Raster {
 
 // gdalwarp over tiles [x0..x1] × [y0..y1] of zoom z with a halo, the extent derived
 // here from the published half width; `args` are the resampling/warper options.
+// `x_origin` is the west edge of the target CRS' world (−kHalfWorld for EPSG:3857).
 Raster gdalwarp_window(const std::string& dem, int z, int x0, int y0, int x1, int y1, int halo,
-                       const std::vector<std::string>& args, const ScratchDir& dir) {
+                       const std::vector<std::string>& args, const ScratchDir& dir, double x_origin = -kHalfWorld) {
   const double pix = 2 * kHalfWorld / (256.0 * std::pow(2.0, z));
-  const double xmin = -kHalfWorld + (x0 * 256.0 - halo) * pix, xmax = -kHalfWorld + ((x1 + 1) * 256.0 + halo) * pix;
+  const double xmin = x_origin + (x0 * 256.0 - halo) * pix, xmax = x_origin + ((x1 + 1) * 256.0 + halo) * pix;
   const double ymax = kHalfWorld - (y0 * 256.0 - halo) * pix, ymin = kHalfWorld - ((y1 + 1) * 256.0 + halo) * pix;
   const int w = (x1 - x0 + 1) * 256 + 2 * halo, h = (y1 - y0 + 1) * 256 + 2 * halo;
   const std::string out = dir.file("gdalwarp_" + std::to_string(z) + "_" + std::to_string(x0) + ".tif");
@@ -203,6 +204,47 @@ TEST(TileWindow, MatchesGdalwarpOnAGeographicDemWithVoids) {
   // Voids are filled (finite) but marked.
   for (std::size_t k = 0; k < win.field.size(); ++k) ASSERT_TRUE(std::isfinite(win.field.heights[k]));
   EXPECT_EQ(win.field.nodata, dem.field.nodata);
+}
+
+// A DEM across the antimeridian, stored in degrees 179.85…180.15° E: its columns run
+// from the world's last (2^z − 1) into the next world's first (2^z, wrapping to 0), and
+// one window over both equals gdalwarp's into a spherical Mercator centred on 180°,
+// where both sides are one plane (the same grid shifted by half a world).
+TEST(TileWindow, AWindowAcrossTheAntimeridianMatchesGdalwarpCentredOn180) {
+  REQUIRE_GDALWARP();
+  ScratchDir dir;
+  testing::RasterSpec spec;
+  spec.width = 120;
+  spec.height = 100;
+  spec.epsg = 4326;
+  spec.gt = {179.85, 0.0025, 0, -17.8, 0, -0.0025};  // ≈ 265 m pixels at 18° S
+  for (int j = 0; j < spec.height; ++j)
+    for (int i = 0; i < spec.width; ++i)
+      spec.values.push_back(800.0 + 300.0 * std::sin(i * 0.11) * std::cos(j * 0.07) + 2.0 * i);
+  const std::string path = testing::make_raster(dir.file("dateline.tif"), spec);
+  const HeightField dem = read_dem(path).field;
+  const TileWindowSource source(dem);
+  const int z = 10;  // 146 m ground pixels: cubic at scale 1
+  const TileRange tiles = tiles_covering(dem_mercator_bounds(dem), z);
+  ASSERT_EQ(tiles.x0, 1023);
+  ASSERT_EQ(tiles.x1, 1024);
+  const TileWindowOptions opt{.halo = 8};
+  const TileWindow win = source.window(tiles, opt);
+  const WarpSettings ws = source.warp_settings(z, opt);
+  ASSERT_EQ(ws.resampling, Resampling::Cubic);
+  std::vector<std::string> args = ws.arguments();
+  ASSERT_EQ(args[0], "-t_srs");
+  args[1] = "+proj=merc +a=6378137 +b=6378137 +lon_0=180 +x_0=0 +y_0=0 +k=1 +units=m +nadgrids=@null +wktext +no_defs";
+  Raster ref = gdalwarp_window(path, z, tiles.x0, tiles.y0, tiles.x1, tiles.y1, opt.halo, args, dir, -2 * kHalfWorld);
+  ref.gt[0] += kHalfWorld;  // back to EPSG:3857, continued past its east edge
+  expect_matches(win, ref, shift_tolerance(ws, max_step(dem)));
+  // Both sides of 180° hold the DEM.
+  const int half = opt.halo + 256;
+  long west = 0, east = 0;
+  for (int j = 0; j < win.field.height; ++j)
+    for (int i = 0; i < win.field.width; ++i) (i < half ? west : east) += win.field.is_valid(i, j);
+  EXPECT_GT(west, 1000);
+  EXPECT_GT(east, 1000);
 }
 
 // A DEM staged on disk (as `skylit tiles` stages one over its memory limit) gives the

@@ -51,7 +51,7 @@ void expect_small_errors(const char* file) {
   SKYLIT_REQUIRE(testing::missing_file(path));
   const HeightField dem = read_dem(path).field;
   const TileWindowSource source(dem);
-  const MercatorToDem exact(dem.georef);
+  const MercatorToDem exact(dem);
   for (int z = 8; z <= 15; ++z) {
     const WarpSettings ws = source.warp_settings(z);
     const NodeGrid g(exact, z, 256, ws.node_spacing, 0, 0, 0, 0);  // nodes computed on demand
@@ -85,7 +85,7 @@ TEST(ZoomTransform, WindowsAgreeBitForBit) {
   const std::string path = dem_path("big_tujunga_srtm30_utm11n.tif");
   SKYLIT_REQUIRE(testing::missing_file(path));
   const HeightField dem = read_dem(path).field;
-  const MercatorToDem exact(dem.georef);
+  const MercatorToDem exact(dem);
   const long long gx = 1407 * 256 + 37, gy = 3263 * 256 + 11;  // z 13, inside the DEM
   const NodeGrid a(exact, 13, 256, 32, gx - 300, gy - 300, gx + 10, gy + 10);
   const NodeGrid b(exact, 13, 256, 32, gx - 5, gy - 7, gx + 500, gy + 200);

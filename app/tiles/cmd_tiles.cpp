@@ -61,7 +61,8 @@ struct TilesArgs {
 };
 
 // -w leaflet: the page beside a .pmtiles file, or inside a tile folder (as gdal2tiles).
-ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileMetadata& meta, std::string& folder) {
+ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileMetadata& meta,
+                       const terrain::LonLatBox& dem_box, std::string& folder) {
   namespace fs = std::filesystem;
   const fs::path out(a.output);
   ViewerSpec v;
@@ -74,7 +75,10 @@ ViewerSpec viewer_spec(const TilesArgs& a, st::ArchiveKind kind, const st::TileM
   v.tile_size = a.tile_size;
   v.minzoom = meta.minzoom;
   v.maxzoom = meta.maxzoom;
-  v.bounds = {meta.bounds.west, meta.bounds.south, meta.bounds.east, meta.bounds.north};
+  // The DEM's own box, whose east runs past 180° across the antimeridian: Leaflet frames
+  // it there and asks for the tiles it wraps to.
+  const auto e7 = st::at_e7_precision;
+  v.bounds = {e7(dem_box.west), e7(dem_box.south), e7(dem_box.east), e7(dem_box.north)};
   v.attribution = "skylit";
   return v;
 }
@@ -234,8 +238,12 @@ int run_tiles(const TilesArgs& a) {
   meta.name = a.name.empty() ? std::filesystem::path(a.inputs.front()).stem().string() + " " + a.product : a.name;
   meta.format = format;
   const auto e7 = st::at_e7_precision;
-  meta.bounds = {e7(ll.west), e7(ll.south), e7(ll.east), e7(ll.north)};
-  meta.center = {e7(0.5 * (ll.west + ll.east)), e7(0.5 * (ll.south + ll.north)), zooms.min};
+  // Across the antimeridian the archive's W,S,E,N box (which cannot wrap) spans every
+  // longitude, as mapbox-gl clamps such bounds; the centre is the DEM's.
+  const bool wraps = ll.east > 180.0;
+  const double centre_lon = 0.5 * (ll.west + ll.east) - (0.5 * (ll.west + ll.east) >= 180.0 ? 360.0 : 0.0);
+  meta.bounds = {wraps ? -180.0 : e7(ll.west), e7(ll.south), wraps ? 180.0 : e7(ll.east), e7(ll.north)};
+  meta.center = {e7(centre_lon), e7(0.5 * (ll.south + ll.north)), zooms.min};
   meta.minzoom = zooms.min;
   meta.maxzoom = zooms.max;
   meta.description = "skylit tiles -p " + a.product;
@@ -252,7 +260,7 @@ int run_tiles(const TilesArgs& a) {
   archive.finish(meta);
   if (a.webviewer == "leaflet") {
     std::string folder;
-    const ViewerSpec spec = viewer_spec(a, kind, meta, folder);
+    const ViewerSpec spec = viewer_spec(a, kind, meta, ll, folder);
     write_leaflet_viewer(folder, spec);
     if (!a.quiet) std::cerr << "skylit: wrote " << (std::filesystem::path(folder) / "index.html").string() << "\n";
   }

@@ -47,8 +47,10 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
   for (const Block& b : blocks) {
     const std::vector<terrain::TileId> tiles = tiles_of(b.tiles);
     std::vector<terrain::TileId> todo;
+    // Columns past the world's east edge (a DEM across the antimeridian) are stored as
+    // the tiles they wrap to.
     for (const auto& t : tiles)
-      if (!archive.has(t)) todo.push_back(t);
+      if (!archive.has(terrain::wrap_tile(t))) todo.push_back(t);
     n.skipped += static_cast<long long>(tiles.size() - todo.size());
     if (todo.empty()) {  // complete from an earlier run: no window to render
       progress.update(done());
@@ -102,7 +104,7 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
         ++n.empty;
         continue;
       }
-      archive.put(todo[k], skylit::tiles::as_bytes(*encoded[k]));
+      archive.put(terrain::wrap_tile(todo[k]), skylit::tiles::as_bytes(*encoded[k]));
       ++n.written;
     }
     progress.update(done());

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <iterator>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace skylit::app::tiles {
@@ -61,7 +62,10 @@ terrain::PixelRect valid_bounds(const terrain::HeightField& field, const terrain
 std::string encode_tile(skylit::tiles::TileFormat format, int size, const std::vector<std::uint8_t>& rgba,
                         int png_zlevel) {
   using skylit::tiles::TileFormat;
-  GDALAllRegister();
+  // Tiles are encoded on every core, and GDALAllRegister rescans its plugin path on each
+  // call without a lock (a data race ThreadSanitizer shows): register once.
+  static std::once_flag registered;
+  std::call_once(registered, [] { GDALAllRegister(); });
   const char* driver_name = format == TileFormat::Png ? "PNG" : format == TileFormat::Webp ? "WEBP" : "JPEG";
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);

@@ -606,6 +606,70 @@ TEST(TilesAcrossTheAntimeridian, WrapToTheWorldsFirstColumnsAndHoldTheDem) {
   const auto bounds = meta["bounds"].get<std::array<double, 4>>();
   EXPECT_EQ(bounds[0], -180.0);
   EXPECT_EQ(bounds[2], 180.0);
+  // --bounds on the part past 180° alone: the world's first columns, the same bytes.
+  const auto e = run_skylit("tiles " + dem + " -o " + out.file("e") + " -p terrain-rgb --zoom 9-11 -q --bounds -179.99," +
+                                std::to_string(south) + ",-179.9,10",
+                            true);
+  ASSERT_EQ(e.status, 0) << e.out;
+  std::set<Tile> east_expect;
+  for (int z = 9; z <= 11; ++z) {
+    const std::set<Tile> c = covering(-179.99, south, east, 10.0, z);
+    east_expect.insert(c.begin(), c.end());
+  }
+  const std::set<Tile> east_got = folder_tiles(out.file("e"));
+  EXPECT_EQ(east_got, east_expect);
+  for (const Tile& t : east_got) {
+    const std::string rel = std::to_string(t.z) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y) + ".png";
+    EXPECT_EQ(file_bytes(fs::path(out.file("e")) / rel), file_bytes(fs::path(out.file("t")) / rel)) << rel;
+  }
+}
+
+// --bounds: the tiles over the DEM's part inside the box (here its south-west quarter,
+// the box reaching past its west and south edges), each with the whole run's bytes; the
+// metadata's bounds are that part.
+TEST_F(Tiles, BoundsWriteTheirCoveringWithTheWholeRunsBytes) {
+  const auto [w, s, e, n] = wgs84_extent(dem());
+  const double east = 0.5 * (w + e), north = 0.5 * (s + n);
+  ScratchDir out;
+  tiles("-o " + out.file("all") + " " + kHillshade);
+  char box[128];
+  std::snprintf(box, sizeof box, "%.7f,%.7f,%.7f,%.7f", w - 1.0, s - 1.0, east, north);
+  tiles("-o " + out.file("part") + " " + kHillshade + " --bounds " + box);
+  std::set<Tile> expect;
+  for (int z = 10; z <= 13; ++z) {
+    const auto c = covering(w, s, east, north, z);
+    expect.insert(c.begin(), c.end());
+  }
+  const std::set<Tile> got = folder_tiles(out.file("part"));
+  EXPECT_EQ(got, expect);
+  EXPECT_LT(got.size(), folder_tiles(out.file("all")).size());
+  for (const Tile& t : got) {
+    const std::string rel = std::to_string(t.z) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y) + ".png";
+    EXPECT_EQ(file_bytes(fs::path(out.file("part")) / rel), file_bytes(fs::path(out.file("all")) / rel)) << rel;
+  }
+  const auto meta = nlohmann::json::parse(file_bytes(fs::path(out.file("part")) / "metadata.json"));
+  const auto b = meta["bounds"].get<std::array<double, 4>>();
+  EXPECT_NEAR(b[0], w, 1e-4);  // the DEM's own edge (64 samples an edge against gdalinfo's corners)
+  EXPECT_NEAR(b[1], s, 1e-4);
+  EXPECT_NEAR(b[2], east, 1e-7);
+  EXPECT_NEAR(b[3], north, 1e-7);
+}
+
+TEST(TilePlan, BoundsParseAndMeetTheDemAcrossTheAntimeridian) {
+  namespace at = skylit::app::tiles;
+  const terrain::LonLatBox b = at::parse_bounds("179.9,-18.1,-179.9,-17.8");
+  EXPECT_DOUBLE_EQ(b.west, 179.9);
+  EXPECT_DOUBLE_EQ(b.east, 180.1);  // across 180°: east comes back past it
+  const terrain::LonLatBox dem{179.85, -18.3, 180.15, -17.9};  // dem_lon_lat_bounds of a DEM across 180°
+  const auto east_part = at::bounded_box(dem, at::parse_bounds("-179.98,-18.1,-179.9,-17.8"));
+  ASSERT_TRUE(east_part);
+  EXPECT_NEAR(east_part->west, 180.02, 1e-12);
+  EXPECT_NEAR(east_part->east, 180.1, 1e-12);
+  EXPECT_DOUBLE_EQ(east_part->north, -17.9);
+  EXPECT_FALSE(at::bounded_box(dem, at::parse_bounds("10,-18,11,-17")));
+  EXPECT_FALSE(at::bounded_box(dem, at::parse_bounds("170,-18,179.85,-17")));  // touching
+  for (const char* bad : {"1,2,3", "1,2,3,4,5", "a,b,c,d", "1,,3,4", "-181,0,1,1", "0,1,1,0", "0,0,0,1", "0,-91,1,1"})
+    EXPECT_THROW(at::parse_bounds(bad), std::invalid_argument) << bad;
 }
 
 TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
@@ -625,6 +689,8 @@ TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
       {nocrs + " -o " + out.file("t.pmtiles"), "no CRS, so it cannot be warped to web-map tiles"},
       {dem() + " -o " + out.file("t.pmtiles") + " --zoom 10 --shard 2/2", "nothing to render"},
       {dem() + " -o " + out.file("t.pmtiles") + " --format gif", "png, webp or jpeg"},
+      {dem() + " -o " + out.file("t.pmtiles") + " --bounds 1,2,3", "not W,S,E,N"},
+      {dem() + " -o " + out.file("t.pmtiles") + " --bounds 10,10,11,11", "does not overlap --bounds 10,10,11,11"},
       {dem() + " -o " + out.file("t.mbtiles") + " --tms", "--tms"},
       {dem() + " -o " + out.file("t.pmtiles") + " -p horizon", "unknown -p"},
       {dem() + " -o " + out.file("t.pmtiles") + " --zoom 20-24", "raise --max-tiles"},  // 5·10⁶ tiles of a 5 km crop

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -42,6 +43,7 @@ struct TilesArgs {
   std::string output;
   std::string product = "shaded";
   std::string zoom;  // "A-B" or "Z"; empty: native − 5 … native
+  std::string bounds;  // "W,S,E,N"; empty: the whole DEM
   int tile_size = 256;
   std::string resampling;
   std::string format = "png";
@@ -185,28 +187,42 @@ int run_tiles(const TilesArgs& a) {
   }
 
   const std::optional<terrain::ZoomRange> given_zooms = parse_zoom(a.zoom);  // before the DEM is read
+  const std::optional<terrain::LonLatBox> bounds =
+      a.bounds.empty() ? std::nullopt : std::optional(parse_bounds(a.bounds));
   const terrain::TileWindowSource source(read_input(a));  // a DEM without a CRS fails here
   const terrain::HeightField& dem = source.dem().outline();
   const terrain::ZoomRange zooms = given_zooms ? *given_zooms : terrain::default_zoom_range(source.native_zoom(a.tile_size));
   const terrain::LonLatBox ll = terrain::dem_lon_lat_bounds(dem);
   const terrain::MercatorBox box = terrain::dem_mercator_bounds(dem);
   const double poleward = std::max(std::abs(ll.south), std::abs(ll.north));
+  // What the tiles show: the DEM's box, or its part within --bounds. Plans and blocks are
+  // the whole DEM's either way, so a tile has the same bytes with or without bounds.
+  terrain::LonLatBox shown = ll;
+  if (bounds) {
+    const auto part = bounded_box(ll, *bounds);
+    if (!part) {
+      char text[160];
+      std::snprintf(text, sizeof text, "the DEM (lon %.4f…%.4f, lat %.4f…%.4f) does not overlap --bounds %s",
+                    ll.west, ll.east > 180.0 ? ll.east - 360.0 : ll.east, ll.south, ll.north, a.bounds.c_str());
+      throw std::invalid_argument(text);
+    }
+    shown = *part;
+  }
   std::vector<ZoomPlan> plans;
   std::vector<Block> all;
-  std::uint64_t tile_count = 0;
   for (int z = zooms.min; z <= zooms.max; ++z) {
     plans.push_back(plan_zoom(box, poleward, z, a.tile_size, {a.halo, a.max_distance}));
-    tile_count += static_cast<std::uint64_t>(plans.back().covering.count());
+    const auto b = blocks(plans.back(), a.tile_size);
+    all.insert(all.end(), b.begin(), b.end());
   }
+  if (bounds) all = within(all, shown);
+  std::uint64_t tile_count = 0;
+  for (const Block& b : all) tile_count += static_cast<std::uint64_t>(b.wanted.count());
   if (tile_count > a.max_tiles)
     throw std::invalid_argument("zooms " + std::to_string(zooms.min) + "-" + std::to_string(zooms.max) + " cover the DEM with " +
                                 std::to_string(tile_count) + " tiles, over --max-tiles " + std::to_string(a.max_tiles) +
                                 " (its native zoom is " + std::to_string(source.native_zoom(a.tile_size)) +
                                 "); raise --max-tiles to render them");
-  for (const ZoomPlan& p : plans) {
-    const auto b = blocks(p, a.tile_size);
-    all.insert(all.end(), b.begin(), b.end());
-  }
   const std::vector<Block> mine = shard_blocks(all, shard);
   if (source.dem().valid_count() == 0) throw std::invalid_argument("nothing to render: the DEM has no valid heights");
   if (mine.empty())
@@ -240,15 +256,15 @@ int run_tiles(const TilesArgs& a) {
   const auto e7 = st::at_e7_precision;
   // Across the antimeridian the archive's W,S,E,N box (which cannot wrap) spans every
   // longitude, as mapbox-gl clamps such bounds; the centre is the DEM's.
-  const bool wraps = ll.east > 180.0;
-  const double centre_lon = 0.5 * (ll.west + ll.east) - (0.5 * (ll.west + ll.east) >= 180.0 ? 360.0 : 0.0);
-  meta.bounds = {wraps ? -180.0 : e7(ll.west), e7(ll.south), wraps ? 180.0 : e7(ll.east), e7(ll.north)};
-  meta.center = {e7(centre_lon), e7(0.5 * (ll.south + ll.north)), zooms.min};
+  const bool wraps = shown.east > 180.0;
+  const double centre_lon = 0.5 * (shown.west + shown.east) - (0.5 * (shown.west + shown.east) >= 180.0 ? 360.0 : 0.0);
+  meta.bounds = {wraps ? -180.0 : e7(shown.west), e7(shown.south), wraps ? 180.0 : e7(shown.east), e7(shown.north)};
+  meta.center = {e7(centre_lon), e7(0.5 * (shown.south + shown.north)), zooms.min};
   meta.minzoom = zooms.min;
   meta.maxzoom = zooms.max;
   meta.description = "skylit tiles -p " + a.product;
   RunOptions run{a.inputs, a.product, a.quality, a.resampling, a.light.tone, request, zooms, a.tile_size,
-                 format, a.tms, plans};
+                 format, a.tms, plans, bounds};
   meta.fingerprint = archive_options.fingerprint = run_fingerprint(run);
   st::validate(meta);
 
@@ -260,7 +276,7 @@ int run_tiles(const TilesArgs& a) {
   archive.finish(meta);
   if (a.webviewer == "leaflet") {
     std::string folder;
-    const ViewerSpec spec = viewer_spec(a, kind, meta, ll, folder);
+    const ViewerSpec spec = viewer_spec(a, kind, meta, shown, folder);
     write_leaflet_viewer(folder, spec);
     if (!a.quiet) std::cerr << "skylit: wrote " << (std::filesystem::path(folder) / "index.html").string() << "\n";
   }
@@ -283,6 +299,9 @@ void add_tiles_command(CLI::App& root, Action& run) {
                   "shaded | hillshade | skyview | svf | shadow | irradiance | terrain-rgb | terrarium")
       ->capture_default_str();
   cmd->add_option("-z,--zoom", a->zoom, "Zoom Z or range A-B, 0..24 (default: native-5 .. native)");
+  cmd->add_option("--bounds", a->bounds,
+                  "Only the tiles over this WGS 84 box W,S,E,N in degrees (W > E: across the antimeridian); "
+                  "they equal the whole run's tiles byte for byte");
   cmd->add_option("--tile-size,--tilesize", a->tile_size, "Tile side in pixels")
       ->check(CLI::IsMember({256, 512}))->capture_default_str();
   cmd->add_option("-r,--resampling", a->resampling,

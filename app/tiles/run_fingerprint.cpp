@@ -49,6 +49,10 @@ std::string run_fingerprint(const RunOptions& o) {
     << "sun=" << (l.sun ? "on" : "off") << "\n"
     << "sky=" << l.sky << " turbidity " << exact(l.turbidity) << " scale " << exact(l.sky_scale) << "\n"
     << "tone=" << o.tone << "\n";
+  // Runs without bounds keep the text they had, so their archives still resume.
+  if (o.bounds)
+    f << "bounds=" << exact(o.bounds->west) << "," << exact(o.bounds->south) << "," << exact(o.bounds->east) << ","
+      << exact(o.bounds->north) << "\n";
   return f.str();
 }
 

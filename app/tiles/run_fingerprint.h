@@ -4,6 +4,7 @@
 // run must merge and resume into each other), --threads and -q.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct RunOptions {
   skylit::tiles::TileFormat format = skylit::tiles::TileFormat::Png;
   bool tms = false;
   std::vector<ZoomPlan> plans;  // each zoom's halo and horizon distance
+  std::optional<terrain::LonLatBox> bounds;  // --bounds (parsed); recorded only when given
 };
 
 // Each DEM enters as its absolute path, size and modification time (reading every byte

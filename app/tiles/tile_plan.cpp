@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -81,12 +82,66 @@ std::vector<Block> blocks(const ZoomPlan& plan, int tile_size) {
       b.z = plan.z;
       b.column = bx;
       b.row = by;
-      b.tiles = {plan.z, x0, y0, x1, y1};
+      b.tiles = b.wanted = {plan.z, x0, y0, x1, y1};
       const double w = b.tiles.columns() * double(tile_size) + 2 * plan.halo;
       const double h = b.tiles.rows() * double(tile_size) + 2 * plan.halo;
       b.cost = w * h;
       out.push_back(b);
     }
+  return out;
+}
+
+terrain::LonLatBox parse_bounds(const std::string& text) {
+  const auto bad = [&](const std::string& why) {
+    return std::invalid_argument("--bounds '" + text + "': " + why);
+  };
+  std::vector<double> v;
+  std::size_t at = 0;
+  while (v.size() < 5) {
+    const std::size_t comma = text.find(',', at);
+    const std::string part = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    char* end = nullptr;
+    const double x = std::strtod(part.c_str(), &end);
+    if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x))
+      throw bad("not W,S,E,N in degrees (e.g. -118.3,34.2,-117.9,34.4)");
+    v.push_back(x);
+    if (comma == std::string::npos) break;
+    at = comma + 1;
+  }
+  if (v.size() != 4) throw bad("not W,S,E,N in degrees (e.g. -118.3,34.2,-117.9,34.4)");
+  terrain::LonLatBox b{v[0], v[1], v[2], v[3]};
+  if (std::abs(b.west) > 180 || std::abs(b.east) > 180) throw bad("longitudes run -180…180");
+  if (std::abs(b.south) > 90 || std::abs(b.north) > 90) throw bad("latitudes run -90…90");
+  if (!(b.south < b.north)) throw bad("the south edge is not below the north edge");
+  if (b.west == b.east) throw bad("the box has no width");
+  if (b.west > b.east) b.east += 360.0;  // across the antimeridian
+  return b;
+}
+
+std::optional<terrain::LonLatBox> bounded_box(const terrain::LonLatBox& dem, const terrain::LonLatBox& bounds) {
+  const double south = std::max(dem.south, bounds.south), north = std::min(dem.north, bounds.north);
+  if (!(south < north)) return std::nullopt;
+  for (const double shift : {0.0, -360.0, 360.0}) {  // the bounds in the DEM box's longitudes
+    const double west = std::max(dem.west, bounds.west + shift), east = std::min(dem.east, bounds.east + shift);
+    if (west < east) return terrain::LonLatBox{west, south, east, north};
+  }
+  return std::nullopt;
+}
+
+std::vector<Block> within(const std::vector<Block>& blocks, const terrain::LonLatBox& box) {
+  // A box wholly past 180° (the east part of a DEM across the antimeridian) lies in the
+  // world's next copy: its covering there is that of the box 360° west, 2^z columns on.
+  const double shift = box.west >= 180.0 ? 360.0 : 0.0;
+  const terrain::MercatorPoint sw = terrain::lon_lat_to_mercator(box.west - shift, box.south);
+  const terrain::MercatorPoint ne = terrain::lon_lat_to_mercator(box.east - shift, box.north);
+  std::vector<Block> out;
+  for (Block b : blocks) {
+    terrain::TileRange w = terrain::tiles_covering(terrain::MercatorBox{sw.x, sw.y, ne.x, ne.y}, b.z);
+    if (shift > 0.0) w.x0 += terrain::tiles_per_side(b.z), w.x1 += terrain::tiles_per_side(b.z);
+    b.wanted = {b.z, std::max(b.tiles.x0, w.x0), std::max(b.tiles.y0, w.y0), std::min(b.tiles.x1, w.x1),
+                std::min(b.tiles.y1, w.y1)};
+    if (!b.wanted.empty()) out.push_back(b);
+  }
   return out;
 }
 

@@ -56,7 +56,8 @@ ZoomPlan plan_zoom(const terrain::MercatorBox& dem_bounds, double poleward_latit
 struct Block {
   int z = 0;
   int column = 0, row = 0;       // block index from the covering range's corner
-  terrain::TileRange tiles;      // the block's tiles that cover the DEM
+  terrain::TileRange tiles;      // the block's tiles that cover the DEM: its window
+  terrain::TileRange wanted;     // those the run writes (all of them but with --bounds)
   double cost = 0.0;             // pixels to render, halo included
   bool operator==(const Block&) const = default;
 };
@@ -66,6 +67,20 @@ struct Block {
 // near-equal sides (the first ones a tile longer), in row-major order; Block::column and
 // row count blocks from the range's corner.
 std::vector<Block> blocks(const ZoomPlan& plan, int tile_size);
+
+// --bounds W,S,E,N in WGS 84 degrees; W > E runs across the antimeridian (E then comes
+// back past 180°, as dem_lon_lat_bounds gives east). Throws std::invalid_argument naming
+// --bounds for text that is not four numbers, or a box outside the globe or without area.
+terrain::LonLatBox parse_bounds(const std::string& text);
+
+// The part of the DEM's box (dem_lon_lat_bounds) inside `bounds`, in the DEM box's
+// longitudes; nullopt where they do not overlap (touching edges do not).
+std::optional<terrain::LonLatBox> bounded_box(const terrain::LonLatBox& dem, const terrain::LonLatBox& bounds);
+
+// The blocks narrowed to the tiles over `box` (tiles_covering at each block's zoom),
+// dropping those left with none. A kept block keeps its window (Block::tiles), so its
+// tiles are those of the run without bounds, byte for byte.
+std::vector<Block> within(const std::vector<Block>& blocks, const terrain::LonLatBox& box);
 
 struct Shard {
   int index = 1, count = 1;  // 1 ≤ index ≤ count

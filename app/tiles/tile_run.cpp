@@ -40,12 +40,12 @@ RunCounts render_blocks(const terrain::TileWindowSource& source, const std::vect
                         const std::vector<Block>& blocks, const TileJob& job, shading::Renderer* renderer,
                         LazyArchive& archive) {
   long long total = 0;
-  for (const Block& b : blocks) total += b.tiles.count();
+  for (const Block& b : blocks) total += b.wanted.count();
   TileProgress progress(total, job.quiet);
   RunCounts n;
   const auto done = [&n] { return n.written + n.skipped + n.empty; };
   for (const Block& b : blocks) {
-    const std::vector<terrain::TileId> tiles = tiles_of(b.tiles);
+    const std::vector<terrain::TileId> tiles = tiles_of(b.wanted);
     std::vector<terrain::TileId> todo;
     // Columns past the world's east edge (a DEM across the antimeridian) are stored as
     // the tiles they wrap to.

@@ -7,7 +7,6 @@
 #include "terrain_test_util.h"
 
 #include <gdal_priv.h>
-#include <ogr_spatialref.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
@@ -24,6 +23,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -530,23 +530,15 @@ TEST(TilePlan, FewestEvenBlocksCoverTheTilesAndShardsPartitionByCost) {
   EXPECT_EQ(at::parse_shard("2/5").index, 2);
 }
 
-// A flat 32 × 32 DEM at `gt`, in EPSG `epsg` (0: without a spatial reference).
-std::string write_small_dem(const ScratchDir& dir, const std::string& name, int epsg, const std::array<double, 6>& gt) {
-  GDALAllRegister();
-  const std::string path = dir.file(name);
-  GDALDataset* ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 32, 32, 1, GDT_Float32, nullptr);
-  double t[6];
-  std::copy(gt.begin(), gt.end(), t);
-  ds->SetGeoTransform(t);
-  if (epsg != 0) {
-    OGRSpatialReference srs;
-    srs.importFromEPSG(epsg);
-    ds->SetSpatialRef(&srs);
-  }
-  std::vector<float> h(32 * 32, 500.0f);
-  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, 32, 32, h.data(), 32, 32, GDT_Float32, 0, 0, nullptr), CE_None);
-  GDALClose(GDALDataset::ToHandle(ds));
-  return path;
+// A flat 32 × 32 DEM at 500 m with geotransform `gt`, in EPSG `epsg` (none: no CRS).
+std::string write_small_dem(const ScratchDir& dir, const std::string& name, std::optional<int> epsg,
+                            const std::array<double, 6>& gt) {
+  terrain::testing::RasterSpec spec;
+  spec.width = spec.height = 32;
+  spec.values.assign(32 * 32, 500.0);
+  spec.gt = gt;
+  spec.epsg = epsg;
+  return terrain::testing::make_raster(dir.file(name), spec);
 }
 
 // A zoom range that covers the DEM with more tiles than --max-tiles is refused before
@@ -674,7 +666,7 @@ TEST(TilePlan, BoundsParseAndMeetTheDemAcrossTheAntimeridian) {
 
 TEST_F(Tiles, BadInputGivesOneLineAndNoOutput) {
   ScratchDir out;
-  const std::string nocrs = write_small_dem(out, "nocrs.tif", 0, {380000, 30, 0, 3800000, 0, -30});
+  const std::string nocrs = write_small_dem(out, "nocrs.tif", std::nullopt, {380000, 30, 0, 3800000, 0, -30});
   fs::create_directories(out.file("exists"));
   const auto before = out.listing();
   const std::vector<std::pair<std::string, std::string>> cases{

@@ -257,7 +257,7 @@ int run_tiles(const TilesArgs& a) {
   // Across the antimeridian the archive's W,S,E,N box (which cannot wrap) spans every
   // longitude, as mapbox-gl clamps such bounds; the centre is the DEM's.
   const bool wraps = shown.east > 180.0;
-  const double centre_lon = 0.5 * (shown.west + shown.east) - (0.5 * (shown.west + shown.east) >= 180.0 ? 360.0 : 0.0);
+  const double mid = 0.5 * (shown.west + shown.east), centre_lon = mid >= 180.0 ? mid - 360.0 : mid;
   meta.bounds = {wraps ? -180.0 : e7(shown.west), e7(shown.south), wraps ? 180.0 : e7(shown.east), e7(shown.north)};
   meta.center = {e7(centre_lon), e7(0.5 * (shown.south + shown.north)), zooms.min};
   meta.minzoom = zooms.min;
